@@ -19,6 +19,7 @@ function(simp_add_library)
   target_include_directories(${target} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
   target_link_libraries(${target} PUBLIC ${ARG_DEPS})
   simp_set_compiler_options(${target})
+  set_property(GLOBAL APPEND PROPERTY SIMP_LIBRARIES ${target})
 endfunction()
 
 # A thin program over the libraries; the linker must keep plugin libraries whose
