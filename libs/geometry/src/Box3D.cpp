@@ -63,6 +63,11 @@ Box3D canonicalizeUpright(const Box3D& box) {
     return out;
 }
 
+bool containsPoint(const Box3D& box, const Eigen::Vector3d& p) {
+    const Eigen::Vector3d local = box.R.transpose() * (p - box.center);
+    return (local.cwiseAbs().array() <= 0.5 * box.size.array()).all();
+}
+
 double yawOf(const Box3D& box) { return std::atan2(box.R(1, 0), box.R(0, 0)); }
 
 }  // namespace simp::geometry

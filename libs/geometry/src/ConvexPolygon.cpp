@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace simp::geometry {
 namespace {
@@ -11,42 +13,82 @@ inline double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Ei
     return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-// Sutherland-Hodgman: keeps the part of `subject` left of the directed edge a->b.
-// Output capacity: a convex n-gon clipped by a half plane has at most n+1 vertices.
-inline void clipByEdge(const ConvexPolygon& subject, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                       ConvexPolygon& out) {
+/// Working polygon of the clipper, structure of arrays, never zero-initialised.
+/// Capacity: the intersection of a convex n-gon and a convex m-gon has at most
+/// n + m vertices, and so has every intermediate of Sutherland-Hodgman.
+struct ClipBuffer {
+    static constexpr std::size_t kCapacity = 2 * ConvexPolygon::kMaxVertices;
+    double x[kCapacity];
+    double y[kCapacity];
+    std::size_t n;
+};
+
+/// Twice the signed area (> 0 counter-clockwise) of a polygon's vertex loop.
+inline double twiceSignedArea(const ConvexPolygon& p) {
+    if (p.n < 3) return 0.0;
+    double twice = 0.0;
+    for (std::size_t i = 0, j = p.n - 1; i < p.n; j = i++) twice += p.v[j].x() * p.v[i].y() - p.v[i].x() * p.v[j].y();
+    return twice;
+}
+
+/// Sutherland-Hodgman step: keeps the part of `in` left of the directed line
+/// (ax, ay) -> (ax + ex, ay + ey). Points on the line are kept.
+inline void clipByEdge(const ClipBuffer& in, double ax, double ay, double ex, double ey, ClipBuffer& out) {
     out.n = 0;
-    if (subject.n == 0) return;
-    const Eigen::Vector2d edge = b - a;
-    auto side = [&](const Eigen::Vector2d& p) { return edge.x() * (p.y() - a.y()) - edge.y() * (p.x() - a.x()); };
-    Eigen::Vector2d prev = subject.v[subject.n - 1];
-    double prev_side = side(prev);
-    for (std::size_t i = 0; i < subject.n; ++i) {
-        const Eigen::Vector2d& cur = subject.v[i];
-        const double cur_side = side(cur);
-        if (cur_side >= 0) {
-            if (prev_side < 0 && out.n < ConvexPolygon::kMaxVertices) {
-                const double t = prev_side / (prev_side - cur_side);
-                out.push(prev + t * (cur - prev));
-            }
-            if (out.n < ConvexPolygon::kMaxVertices) out.push(cur);
-        } else if (prev_side >= 0 && out.n < ConvexPolygon::kMaxVertices) {
-            const double t = prev_side / (prev_side - cur_side);
-            out.push(prev + t * (cur - prev));
+    const std::size_t n = in.n;
+    double px = in.x[n - 1], py = in.y[n - 1];
+    double ps = ex * (py - ay) - ey * (px - ax);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double cx = in.x[i], cy = in.y[i];
+        const double cs = ex * (cy - ay) - ey * (cx - ax);
+        if ((cs >= 0.0) != (ps >= 0.0) && out.n < ClipBuffer::kCapacity) {  // the edge crosses the line
+            const double t = ps / (ps - cs);
+            out.x[out.n] = px + t * (cx - px);
+            out.y[out.n] = py + t * (cy - py);
+            ++out.n;
         }
-        prev = cur;
-        prev_side = cur_side;
+        if (cs >= 0.0 && out.n < ClipBuffer::kCapacity) {
+            out.x[out.n] = cx;
+            out.y[out.n] = cy;
+            ++out.n;
+        }
+        px = cx;
+        py = cy;
+        ps = cs;
     }
+}
+
+/// Exact intersection area of a with b; `b_ccw` tells b's vertex order (a's does not matter).
+double clipArea(const ConvexPolygon& a, const ConvexPolygon& b, bool b_ccw) {
+    ClipBuffer buf1, buf2;
+    buf1.n = a.n;
+    for (std::size_t i = 0; i < a.n; ++i) {
+        buf1.x[i] = a.v[i].x();
+        buf1.y[i] = a.v[i].y();
+    }
+    ClipBuffer* cur = &buf1;
+    ClipBuffer* next = &buf2;
+    for (std::size_t i = 0, j = b.n - 1; i < b.n; j = i++) {
+        // Edge j -> i of b, reversed when b is clockwise, so b's inside is on its left.
+        const Eigen::Vector2d& from = b_ccw ? b.v[j] : b.v[i];
+        const Eigen::Vector2d& to = b_ccw ? b.v[i] : b.v[j];
+        clipByEdge(*cur, from.x(), from.y(), to.x() - from.x(), to.y() - from.y(), *next);
+        std::swap(cur, next);
+        if (cur->n < 3) return 0.0;
+    }
+    double twice = 0.0;
+    for (std::size_t i = 0, j = cur->n - 1; i < cur->n; j = i++) twice += cur->x[j] * cur->y[i] - cur->x[i] * cur->y[j];
+    return 0.5 * std::abs(twice);
 }
 
 }  // namespace
 
-double ConvexPolygon::area() const {
-    if (n < 3) return 0.0;
-    double twice = 0.0;
-    for (std::size_t i = 0, j = n - 1; i < n; j = i++) twice += v[j].x() * v[i].y() - v[i].x() * v[j].y();
-    return 0.5 * std::abs(twice);
+void ConvexPolygon::throwFull() {
+    throw std::length_error("simp::geometry::ConvexPolygon::push: more than kMaxVertices = " +
+                            std::to_string(kMaxVertices) + " vertices");
 }
+
+double ConvexPolygon::area() const { return 0.5 * std::abs(twiceSignedArea(*this)); }
 
 Eigen::Vector2d ConvexPolygon::centroid() const {
     if (n == 0) return Eigen::Vector2d::Zero();
@@ -84,12 +126,15 @@ ConvexPolygon ConvexPolygon::transformed(double c, double s, const Eigen::Vector
 
 ConvexPolygon convexHull(const Eigen::Vector2d* points, std::size_t count) {
     // Andrew's monotone chain; count <= kMaxVertices keeps the output bounded.
-    std::array<Eigen::Vector2d, ConvexPolygon::kMaxVertices> p{};
-    count = std::min(count, ConvexPolygon::kMaxVertices);
+    if (count > ConvexPolygon::kMaxVertices)
+        throw std::length_error("simp::geometry::convexHull: " + std::to_string(count) +
+                                " points, at most kMaxVertices = " + std::to_string(ConvexPolygon::kMaxVertices));
+    std::array<Eigen::Vector2d, ConvexPolygon::kMaxVertices> p;
     std::copy(points, points + count, p.begin());
-    std::sort(p.begin(), p.begin() + count,
-              [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-    std::array<Eigen::Vector2d, 2 * ConvexPolygon::kMaxVertices> h{};
+    std::sort(p.begin(), p.begin() + count, [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    });
+    std::array<Eigen::Vector2d, 2 * ConvexPolygon::kMaxVertices> h;
     std::size_t k = 0;
     for (std::size_t i = 0; i < count; ++i) {
         while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
@@ -118,21 +163,16 @@ ConvexPolygon makeRectangle(const Eigen::Vector2d& center, double lx, double ly,
 
 double intersectionArea(const ConvexPolygon& a, const ConvexPolygon& b) {
     if (a.n < 3 || b.n < 3) return 0.0;
-    ConvexPolygon buf1 = a, buf2;
-    ConvexPolygon* cur = &buf1;
-    ConvexPolygon* next = &buf2;
-    for (std::size_t i = 0, j = b.n - 1; i < b.n; j = i++) {
-        clipByEdge(*cur, b.v[j], b.v[i], *next);
-        std::swap(cur, next);
-        if (cur->n < 3) return 0.0;
-    }
-    return cur->area();
+    return clipArea(a, b, twiceSignedArea(b) >= 0.0);
 }
 
 double iou(const ConvexPolygon& a, const ConvexPolygon& b) {
-    const double area_a = a.area(), area_b = b.area();
+    if (a.n < 3 || b.n < 3) return 0.0;
+    const double twice_b = twiceSignedArea(b);
+    const double area_a = 0.5 * std::abs(twiceSignedArea(a)), area_b = 0.5 * std::abs(twice_b);
+    if (std::isnan(area_a) || std::isnan(area_b)) return std::numeric_limits<double>::quiet_NaN();
     if (area_a <= 0.0 || area_b <= 0.0) return 0.0;
-    const double inter = intersectionArea(a, b);
+    const double inter = clipArea(a, b, twice_b >= 0.0);
     const double uni = area_a + area_b - inter;
     return uni > 0.0 ? std::clamp(inter / uni, 0.0, 1.0) : 0.0;
 }

@@ -2,7 +2,7 @@
 /// \file Box3D.h
 /// An oriented 3D box: the shape of a detection and of a map object.
 ///
-/// Conventions (doc/conventions.md):
+/// Conventions (doc/geometry.md):
 ///  - `center` is the box centre in the frame the box is expressed in (m).
 ///  - `size` = (W, H, L): extents along the box's own x, y, z axes (m), as the
 ///    Omni3D / Cube R-CNN `dimensions` field.
@@ -43,6 +43,9 @@ Box3D makeUprightBox(const Eigen::Vector3d& center, const Eigen::Vector3d& size_
 /// Used to compare and average boxes that came from different conventions
 /// (camera boxes have H vertical, map boxes have z vertical).
 Box3D canonicalizeUpright(const Box3D& box);
+
+/// True when point p (same frame as the box, m) lies inside the closed box.
+bool containsPoint(const Box3D& box, const Eigen::Vector3d& p);
 
 /// Yaw (rad) of the box's local x axis projected on the frame's xy plane.
 double yawOf(const Box3D& box);
