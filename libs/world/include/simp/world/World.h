@@ -30,12 +30,54 @@ struct World {
     ObjectMapData objects;
 };
 
+/// The keys of a ROS map_server yaml file (http://wiki.ros.org/map_server#YAML_format).
+struct RosMapYaml {
+    std::string image_path;        ///< resolved: relative paths are relative to the yaml's folder
+    double resolution_m = 0.05;    ///< cell size (m)
+    double origin_x_m = 0, origin_y_m = 0;  ///< world pose of the bottom-left corner of the image
+    double origin_yaw_rad = 0;     ///< must be 0 (MRPT grids are axis-aligned)
+    bool negate = false;
+    double occupied_thresh = 0.65;
+    double free_thresh = 0.196;
+    std::string mode = "trinary";  ///< "trinary" or "scale" ("raw" is rejected)
+};
+
+/// Parses and checks a map_server yaml (required keys: image, resolution, origin,
+/// occupied_thresh, free_thresh; negate and mode optional).
+/// \throw std::runtime_error naming the file and the key.
+RosMapYaml readRosMapYaml(const std::string& yaml_path);
+
+/// Sets the grid's extent exactly (MRPT's setSize rounds the origin to a multiple of the
+/// resolution, which would shift a map_server origin such as -13.9155 m by up to half a cell).
+/// All cells are set to `default_occupancy`.
+void setGridExactly(mrpt::maps::COccupancyGridMap2D& grid, double x_min_m, double y_min_m,
+                    unsigned size_x, unsigned size_y, double resolution_m,
+                    float default_occupancy = 0.5f);
+
 /// Loads a ROS map_server yaml + image (negate, occupied_thresh, free_thresh, origin honoured).
+/// Cell (cx, cy) of the grid = image pixel (column cx, row rows-1-cy); occupancy 1.0 for
+/// p > occupied_thresh, 0.0 for p < free_thresh, else 0.5 (trinary) or the scaled value (scale),
+/// p = (255 - v) / 255, or v / 255 with negate (v = mean of the colour channels).
+/// \throw std::runtime_error naming the file and key on any bad input.
 void loadRosMap(const std::string& yaml_path, mrpt::maps::COccupancyGridMap2D& grid);
-/// Writes `grid` as yaml + png (trinary: 0 occupied, 254 free, 205 unknown).
+/// Writes `grid` as yaml + png (trinary: 0 occupied, 254 free, 205 unknown), the image
+/// named after the yaml (floorplan.yaml -> floorplan.png). Cells with occupancy >= 0.65 are
+/// occupied, <= 0.196 free, others unknown.
 void saveRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& yaml_path);
 
+/// Reads a room raster (8- or 16-bit single-channel PNG/PGM) aligned with a floor plan.
+/// \throw std::runtime_error naming the file on a missing/unreadable/multi-channel image.
+RoomMap loadRoomMap(const std::string& png_path, double resolution_m, double origin_x_m,
+                    double origin_y_m);
+/// Writes the room ids as a 16-bit PNG.
+void saveRoomMap(const RoomMap& rooms, const std::string& png_path);
+
+/// Reads a world directory: floorplan.yaml (+ its image) and objects.json required,
+/// rooms.png optional (must have the floor plan's size).
+/// \throw std::runtime_error naming the directory, file and key.
 World loadWorld(const std::string& dir);
+/// Writes a world directory (created when missing): floorplan.yaml/.png, objects.json and
+/// rooms.png when `world.rooms` is not empty.
 void saveWorld(const World& world, const std::string& dir);
 
 }  // namespace simp::world

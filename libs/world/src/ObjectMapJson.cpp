@@ -1,0 +1,220 @@
+/// \file ObjectMapJson.cpp
+/// The object map file `objects.json` (doc/formats.md): reading with named errors, writing
+/// with full double precision (nlohmann::json prints the shortest text that reads back to the
+/// same double), and the content checks shared by both.
+
+#include "JsonRead.h"
+
+#include <simp/world/ObjectMapData.h>
+
+#include <set>
+#include <stdexcept>
+
+namespace simp::world {
+
+namespace {
+
+using detail::json;
+
+constexpr const char* kFormat = "simp-object-map";
+constexpr int kVersion = 1;
+
+nlohmann::ordered_json noiseToJson(const NoiseModel& n) {
+    return nlohmann::ordered_json{{"mean_m", {n.mean_m.x(), n.mean_m.y()}},
+                {"cov_m2", {{n.cov_m2(0, 0), n.cov_m2(0, 1)}, {n.cov_m2(1, 0), n.cov_m2(1, 1)}}},
+                {"b", n.exponent_b}};
+}
+
+NoiseModel noiseFromJson(const json& j, const std::string& file, const std::string& key) {
+    if (!j.is_object()) detail::fail(file, key, "expected an object with mean_m, cov_m2, b");
+    NoiseModel n;
+    const auto mean = detail::asNumbers(detail::require(j, "mean_m", file, key + ".mean_m"), 2, file,
+                                        key + ".mean_m", "2 numbers [x, y] (m)");
+    n.mean_m = Eigen::Vector2d(mean[0], mean[1]);
+    const json& cov = detail::require(j, "cov_m2", file, key + ".cov_m2");
+    const std::string cov_expect = "a 2x2 matrix [[a, b], [c, d]] (m^2)";
+    if (!cov.is_array() || cov.size() != 2) detail::fail(file, key + ".cov_m2", "expected " + cov_expect);
+    for (int r = 0; r < 2; ++r) {
+        const auto row = detail::asNumbers(cov[static_cast<std::size_t>(r)], 2, file, key + ".cov_m2", cov_expect);
+        n.cov_m2(r, 0) = row[0];
+        n.cov_m2(r, 1) = row[1];
+    }
+    n.exponent_b = detail::asNumber(detail::require(j, "b", file, key + ".b"), file, key + ".b");
+    if (!n.isValid())
+        detail::fail(file, key, "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
+    return n;
+}
+
+Eigen::Matrix3d rotationFromJson(const json& o, const std::string& file, const std::string& key) {
+    const bool has_R = o.contains("rotation");
+    const bool has_yaw = o.contains("yaw_rad");
+    if (has_R == has_yaw)
+        detail::fail(file, key + ".rotation", "expected exactly one of \"rotation\" (3x3) or \"yaw_rad\"");
+    if (has_yaw) {
+        const double yaw = detail::asNumber(o["yaw_rad"], file, key + ".yaw_rad");
+        return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    }
+    const json& R = o["rotation"];
+    const std::string expect = "a 3x3 rotation matrix, row-major [[r00, r01, r02], [..], [..]]";
+    if (!R.is_array() || R.size() != 3) detail::fail(file, key + ".rotation", "expected " + expect);
+    Eigen::Matrix3d M;
+    for (int r = 0; r < 3; ++r) {
+        const auto row = detail::asNumbers(R[static_cast<std::size_t>(r)], 3, file, key + ".rotation", expect);
+        for (int c = 0; c < 3; ++c) M(r, c) = row[static_cast<std::size_t>(c)];
+    }
+    return M;
+}
+
+}  // namespace
+
+void validateObjectMap(const ObjectMapData& d, const std::string& where) {
+    if (d.class_names.empty()) detail::fail(where, "classes", "expected a non-empty list of class names");
+    std::set<std::string> names;
+    for (std::size_t i = 0; i < d.class_names.size(); ++i) {
+        const std::string key = "classes[" + std::to_string(i) + "]";
+        if (d.class_names[i].empty()) detail::fail(where, key, "empty class name");
+        if (!names.insert(d.class_names[i]).second)
+            detail::fail(where, key, "duplicate class name '" + d.class_names[i] + "'");
+    }
+    if (d.class_noise.size() > d.class_names.size())
+        detail::fail(where, "class_noise", "more noise models than classes");
+    for (std::size_t c = 0; c < d.class_noise.size(); ++c)
+        if (d.class_noise[c] && !d.class_noise[c]->isValid())
+            detail::fail(where, "class_noise." + d.class_names[c],
+                         "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
+    std::set<std::int64_t> ids;
+    for (std::size_t i = 0; i < d.objects.size(); ++i) {
+        const MapObject& o = d.objects[i];
+        const std::string key = "objects[" + std::to_string(i) + "]";
+        if (!ids.insert(o.id).second) detail::fail(where, key + ".id", "duplicate id " + std::to_string(o.id));
+        if (o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= d.class_names.size())
+            detail::fail(where, key + ".class", "class id " + std::to_string(o.class_id) + " out of range");
+        if (!o.box.center.allFinite()) detail::fail(where, key + ".center_m", "expected 3 finite numbers");
+        if (!o.box.size.allFinite() || (o.box.size.array() <= 0.0).any())
+            detail::fail(where, key + ".size_m", "expected 3 positive numbers");
+        if (!o.box.isValid(1e-6))
+            detail::fail(where, key + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
+        if (o.n_match < 0) detail::fail(where, key + ".n_match", "expected an integer >= 0");
+        if (o.n_skip < 0) detail::fail(where, key + ".n_skip", "expected an integer >= 0");
+        if (o.room_id < 0) detail::fail(where, key + ".room", "expected an integer >= 0 (0 = no room)");
+        if (o.noise && !o.noise->isValid())
+            detail::fail(where, key + ".noise", "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
+    }
+    std::set<int> room_ids;
+    for (std::size_t i = 0; i < d.rooms.size(); ++i)
+        if (d.rooms[i].id < 1 || !room_ids.insert(d.rooms[i].id).second)
+            detail::fail(where, "rooms[" + std::to_string(i) + "].id", "expected a unique integer >= 1");
+}
+
+ObjectMapData loadObjectMap(const std::string& path) {
+    const json j = detail::readJsonFile(path);
+    if (!j.is_object()) detail::fail(path, "", "expected a JSON object at the top level");
+    const std::string format = detail::asString(detail::require(j, "format", path, "format"), path, "format");
+    if (format != kFormat) detail::fail(path, "format", "expected \"" + std::string(kFormat) + "\", got \"" + format + "\"");
+    const long long version = detail::asInteger(detail::require(j, "version", path, "version"), path, "version");
+    if (version != kVersion)
+        detail::fail(path, "version", "unsupported version " + std::to_string(version) + " (this build reads version " +
+                                          std::to_string(kVersion) + ")");
+
+    ObjectMapData d;
+    const json& classes = detail::require(j, "classes", path, "classes");
+    if (!classes.is_array() || classes.empty()) detail::fail(path, "classes", "expected a non-empty list of class names");
+    for (std::size_t i = 0; i < classes.size(); ++i)
+        d.class_names.push_back(detail::asString(classes[i], path, "classes[" + std::to_string(i) + "]"));
+    d.class_noise.assign(d.class_names.size(), std::nullopt);
+
+    if (j.contains("class_noise")) {
+        const json& cn = j["class_noise"];
+        if (!cn.is_object()) detail::fail(path, "class_noise", "expected an object {class name: noise model}");
+        for (const auto& [name, model] : cn.items()) {
+            const int c = d.classId(name);
+            if (c < 0) detail::fail(path, "class_noise." + name, "unknown class '" + name + "' (not in \"classes\")");
+            d.class_noise[static_cast<std::size_t>(c)] = noiseFromJson(model, path, "class_noise." + name);
+        }
+    }
+
+    const json& objects = detail::require(j, "objects", path, "objects");
+    if (!objects.is_array()) detail::fail(path, "objects", "expected a list of objects");
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        const json& o = objects[i];
+        const std::string key = "objects[" + std::to_string(i) + "]";
+        if (!o.is_object()) detail::fail(path, key, "expected an object");
+        MapObject m;
+        m.id = detail::asInteger(detail::require(o, "id", path, key + ".id"), path, key + ".id");
+        const std::string cls = detail::asString(detail::require(o, "class", path, key + ".class"), path, key + ".class");
+        m.class_id = d.classId(cls);
+        if (m.class_id < 0) detail::fail(path, key + ".class", "unknown class '" + cls + "' (not in \"classes\")");
+        const auto c = detail::asNumbers(detail::require(o, "center_m", path, key + ".center_m"), 3, path,
+                                         key + ".center_m", "3 finite numbers [x, y, z] (m)");
+        const auto s = detail::asNumbers(detail::require(o, "size_m", path, key + ".size_m"), 3, path,
+                                         key + ".size_m", "3 positive numbers");
+        if (s[0] <= 0 || s[1] <= 0 || s[2] <= 0) detail::fail(path, key + ".size_m", "expected 3 positive numbers");
+        m.box.center = Eigen::Vector3d(c[0], c[1], c[2]);
+        m.box.size = Eigen::Vector3d(s[0], s[1], s[2]);
+        m.box.R = rotationFromJson(o, path, key);
+        if (o.contains("n_match")) m.n_match = static_cast<int>(detail::asInteger(o["n_match"], path, key + ".n_match"));
+        if (o.contains("n_skip")) m.n_skip = static_cast<int>(detail::asInteger(o["n_skip"], path, key + ".n_skip"));
+        if (o.contains("room")) m.room_id = static_cast<int>(detail::asInteger(o["room"], path, key + ".room"));
+        if (o.contains("noise") && !o["noise"].is_null()) m.noise = noiseFromJson(o["noise"], path, key + ".noise");
+        d.objects.push_back(m);
+    }
+
+    if (j.contains("room_categories")) {
+        const json& rc = j["room_categories"];
+        if (!rc.is_array()) detail::fail(path, "room_categories", "expected a list of names");
+        for (std::size_t i = 0; i < rc.size(); ++i)
+            d.room_categories.push_back(detail::asString(rc[i], path, "room_categories[" + std::to_string(i) + "]"));
+    }
+    if (j.contains("rooms")) {
+        const json& rooms = j["rooms"];
+        if (!rooms.is_array()) detail::fail(path, "rooms", "expected a list of {id, name, category}");
+        for (std::size_t i = 0; i < rooms.size(); ++i) {
+            const std::string key = "rooms[" + std::to_string(i) + "]";
+            RoomInfo r;
+            r.id = static_cast<int>(detail::asInteger(detail::require(rooms[i], "id", path, key + ".id"), path, key + ".id"));
+            if (rooms[i].contains("name")) r.name = detail::asString(rooms[i]["name"], path, key + ".name");
+            if (rooms[i].contains("category")) r.category = detail::asString(rooms[i]["category"], path, key + ".category");
+            d.rooms.push_back(r);
+        }
+    }
+    validateObjectMap(d, path);
+    return d;
+}
+
+void saveObjectMap(const ObjectMapData& d, const std::string& path) {
+    validateObjectMap(d, path);
+    nlohmann::ordered_json j;
+    j["format"] = kFormat;
+    j["version"] = kVersion;
+    j["classes"] = d.class_names;
+    nlohmann::ordered_json cn = nlohmann::ordered_json::object();
+    for (std::size_t c = 0; c < d.class_noise.size(); ++c)
+        if (d.class_noise[c]) cn[d.class_names[c]] = noiseToJson(*d.class_noise[c]);
+    j["class_noise"] = cn;
+    nlohmann::ordered_json objects = nlohmann::ordered_json::array();
+    for (const MapObject& m : d.objects) {
+        nlohmann::ordered_json o;
+        o["id"] = m.id;
+        o["class"] = d.class_names[static_cast<std::size_t>(m.class_id)];
+        o["center_m"] = {m.box.center.x(), m.box.center.y(), m.box.center.z()};
+        o["size_m"] = {m.box.size.x(), m.box.size.y(), m.box.size.z()};
+        nlohmann::ordered_json R = nlohmann::ordered_json::array();
+        for (int r = 0; r < 3; ++r) R.push_back({m.box.R(r, 0), m.box.R(r, 1), m.box.R(r, 2)});
+        o["rotation"] = R;
+        o["n_match"] = m.n_match;
+        o["n_skip"] = m.n_skip;
+        o["room"] = m.room_id;
+        if (m.noise) o["noise"] = noiseToJson(*m.noise);
+        objects.push_back(o);
+    }
+    j["objects"] = objects;
+    if (!d.room_categories.empty()) j["room_categories"] = d.room_categories;
+    if (!d.rooms.empty()) {
+        nlohmann::ordered_json rooms = nlohmann::ordered_json::array();
+        for (const RoomInfo& r : d.rooms) rooms.push_back({{"id", r.id}, {"name", r.name}, {"category", r.category}});
+        j["rooms"] = rooms;
+    }
+    detail::writeJsonFile(j, path);
+}
+
+}  // namespace simp::world

@@ -1,0 +1,44 @@
+/// \file RoomMap.cpp
+/// The room raster: one room id per floor-plan pixel (0 = no room), row 0 = top of the image.
+
+#include <opencv2/imgcodecs.hpp>
+#include <simp/world/World.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace simp::world {
+
+int RoomMap::roomAt(double x_m, double y_m) const {
+    if (ids.empty() || !std::isfinite(x_m) || !std::isfinite(y_m)) return 0;
+    // Same cell geometry as the floor plan: column c covers [ox + c res, ox + (c+1) res).
+    const double fc = std::floor((x_m - origin_x_m) / resolution_m);
+    const double fr_from_bottom = std::floor((y_m - origin_y_m) / resolution_m);
+    if (fc < 0 || fr_from_bottom < 0 || fc >= ids.cols || fr_from_bottom >= ids.rows) return 0;
+    const int row = ids.rows - 1 - static_cast<int>(fr_from_bottom);
+    return ids(row, static_cast<int>(fc));
+}
+
+RoomMap loadRoomMap(const std::string& png_path, double resolution_m, double origin_x_m, double origin_y_m) {
+    if (!std::filesystem::exists(png_path)) throw std::runtime_error(png_path + ": file not found");
+    const cv::Mat img = cv::imread(png_path, cv::IMREAD_UNCHANGED);
+    if (img.empty()) throw std::runtime_error(png_path + ": cannot read the image");
+    if (img.channels() != 1 || (img.depth() != CV_8U && img.depth() != CV_16U))
+        throw std::runtime_error(png_path + ": expected a single-channel 8-bit or 16-bit image of room ids");
+    RoomMap r;
+    img.convertTo(r.ids, CV_16U);
+    r.resolution_m = resolution_m;
+    r.origin_x_m = origin_x_m;
+    r.origin_y_m = origin_y_m;
+    return r;
+}
+
+void saveRoomMap(const RoomMap& rooms, const std::string& png_path) {
+    if (rooms.empty()) throw std::runtime_error(png_path + ": cannot save an empty room map");
+    const std::filesystem::path p(png_path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    if (!cv::imwrite(png_path, rooms.ids)) throw std::runtime_error(png_path + ": cannot write the image");
+}
+
+}  // namespace simp::world
