@@ -1,0 +1,114 @@
+/// \file StatsApp.cpp
+#include <mrpt/config/CConfigFile.h>
+#include <simp/stats/NoiseModelFiles.h>
+#include <simp/stats/NoisePlot.h>
+#include <simp/stats/StatsApp.h>
+#include <simp/world/World.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace simp::stats {
+
+namespace fs = std::filesystem;
+
+std::string StatsApp::usage() {
+    return "Usage: simp-stats --rawlog Q/sequence.rawlog --poses Q/groundtruth.tum --world W --out DIR\n"
+           "                  [--delta M] [--config INI]\n"
+           "Fits the per-class detection noise N(mu, Sigma) in the object frame (paper Sec. Statistical\n"
+           "Analysis) and writes DIR/class_noise.json, class_noise.csv, class_noise_stats.csv, noise_<class>.png.\n"
+           "  --rawlog   detections (CObservationObjects3D) with timestamps\n"
+           "  --poses    ground-truth robot poses (TUM), interpolated at each observation's time\n"
+           "  --world    world directory (or an objects.json file) with the ground-truth objects\n"
+           "  --delta    matching gate: max centre distance (m), overrides [simp-stats] delta_m\n"
+           "  --config   .ini with a [simp-stats] section (doc/statistics.md)\n";
+}
+
+bool StatsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
+    std::optional<double> delta;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h") {
+            out << usage();
+            return false;
+        }
+        if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value (see --help)");
+        const std::string v = argv[++i];
+        if (a == "--rawlog") rawlog_path = v;
+        else if (a == "--poses") poses_path = v;
+        else if (a == "--world") world_path = v;
+        else if (a == "--out") out_dir = v;
+        else if (a == "--config") config_path = v;
+        else if (a == "--delta") {
+            try {
+                std::size_t used = 0;
+                delta = std::stod(v, &used);
+                if (used != v.size()) throw std::invalid_argument(v);
+            } catch (const std::exception&) {
+                throw std::invalid_argument("--delta: expected a number of metres, got '" + v + "'");
+            }
+        } else
+            throw std::invalid_argument("unknown option " + a + " (see --help)");
+    }
+    for (const auto& [name, value] : {std::pair{"--rawlog", rawlog_path}, std::pair{"--poses", poses_path},
+                                      std::pair{"--world", world_path}, std::pair{"--out", out_dir}})
+        if (value.empty()) throw std::invalid_argument(std::string("missing required option ") + name + " (see --help)");
+    if (!config_path.empty()) {
+        if (!fs::exists(config_path)) throw std::invalid_argument(config_path + ": config file not found");
+        options.loadFromConfigFile(mrpt::config::CConfigFile(config_path), "simp-stats");
+    }
+    if (delta) options.delta_m = *delta;
+    options.validate();
+    return true;
+}
+
+int StatsApp::run(std::ostream& out) {
+    options.dumpToTextStream(out);
+    const world::ObjectMapData gt = fs::is_directory(world_path) ? world::loadWorld(world_path).objects
+                                                                 : world::loadObjectMap(world_path);
+    if (gt.objects.empty()) throw std::runtime_error(world_path + ": the world has no objects to match against");
+    const auto poses = io::readTum(poses_path);
+    if (poses.size() < 2) throw std::runtime_error(poses_path + ": need at least 2 poses");
+    out << "reading " << rawlog_path << " ...\n";
+    const auto frames = obs::readRawlog(rawlog_path);
+    out << frames.size() << " frames\n";
+    samples = collectOffsetSamples(frames, poses, gt, SampleOptions{options.delta_m, options.min_confidence});
+    const SampleCounts& n = samples.counts;
+    out << "detections " << n.detections << ": matched " << n.matched << ", discarded (none within delta) "
+        << n.discarded << ", no pose " << n.no_pose << ", unknown class " << n.unknown_class << ", low score "
+        << n.low_confidence << "\n";
+
+    class_names = gt.class_names;
+    fits.assign(class_names.size(), std::nullopt);
+    fs::create_directories(out_dir);
+    for (std::size_t c = 0; c < class_names.size(); ++c) {
+        const auto& s = samples.per_class[c];
+        if (s.size() < static_cast<std::size_t>(options.min_samples)) {
+            if (!s.empty()) out << class_names[c] << ": " << s.size() << " samples < min_samples, not modelled\n";
+            continue;
+        }
+        NoiseFit f = fitGaussian(s, options.outlier_mahalanobis);
+        const double sigma_max = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(f.model.cov_m2).eigenvalues()(1));
+        const double half = options.plot_half_extent_m > 0 ? options.plot_half_extent_m : std::max(0.5, 3.5 * sigma_max);
+        const Histogram2D h = makeHistogram(s, options.cell_size_m, f.model.mean_m, half);
+        if (options.fit_source == "histogram") f = fitGaussianFromHistogram(h);
+        std::string file = class_names[c];
+        std::replace(file.begin(), file.end(), ' ', '_');
+        writeNoisePng((fs::path(out_dir) / ("noise_" + file + ".png")).string(), h, f,
+                      class_names[c] + " n=" + std::to_string(f.n), options.plot_pixels_per_cell);
+        out << class_names[c] << ": n=" << f.n << " mu=(" << f.model.mean_m.x() << ", " << f.model.mean_m.y()
+            << ") m, sigma=(" << std::sqrt(f.model.cov_m2(0, 0)) << ", " << std::sqrt(f.model.cov_m2(1, 1))
+            << ") m, rho=" << f.model.cov_m2(0, 1) / std::sqrt(f.model.cov_m2(0, 0) * f.model.cov_m2(1, 1)) << "\n";
+        fits[c] = f;
+    }
+    writeClassNoiseJson((fs::path(out_dir) / "class_noise.json").string(), class_names, fits);
+    writeClassNoiseCsv((fs::path(out_dir) / "class_noise.csv").string(), fits, options.cell_size_m);
+    writeClassNoiseStatsCsv((fs::path(out_dir) / "class_noise_stats.csv").string(), class_names, fits);
+    out << "wrote " << out_dir << "/class_noise.json, class_noise.csv, class_noise_stats.csv\n";
+    return 0;
+}
+
+}  // namespace simp::stats
