@@ -105,6 +105,38 @@ TEST(Box3DIoU, UprightFastPathAgreesWithClipping) {
     EXPECT_GT(overlapping, 100);  // the comparison is not only between empty intersections
 }
 
+TEST(Box3DIoU, NearlyCoincidentBoxesAreStable) {
+    // Faces almost coplanar (rotation by s rad about a random axis and shift by ~s m, s from
+    // 1e-16 to 1e-4) stress the clipper's tolerance: the volume moves by O(s) (the wedges cut
+    // off are at most ~3 s in relative volume), never by a whole face or a sliver triangle.
+    // Also: the same cube with its axes relabelled (identical solid), shifted by a full
+    // side (touching faces) and by half a side.
+    std::mt19937_64 rng(12);
+    std::normal_distribution<double> n01;
+    for (int trial = 0; trial < 600; ++trial) {
+        Box3D a = box({n01(rng), n01(rng), n01(rng)}, {1.0, 0.7, 0.4}, randomRotation(rng));
+        Box3D b = a;
+        if (trial % 3 == 0) {  // a cube, and b the same cube with axes (y, z, x)
+            a.size = b.size = Eigen::Vector3d::Ones();
+            b.R << a.R.col(1), a.R.col(2), a.R.col(0);
+        }
+        const double s = std::pow(10.0, -16.0 + 12.0 * (trial % 50) / 50.0);
+        const Eigen::Vector3d axis = Eigen::Vector3d(n01(rng), n01(rng), n01(rng)).normalized();
+        b.R = Eigen::AngleAxisd(s, axis).toRotationMatrix() * b.R;
+        b.center += s * Eigen::Vector3d(n01(rng), n01(rng), n01(rng)).normalized();
+        double expected = a.volume();
+        if (trial % 5 == 1) {  // touching along a's x faces
+            b.center += a.size[0] * a.R.col(0);
+            expected = 0.0;
+        } else if (trial % 5 == 2) {  // half a side along a's y
+            b.center += 0.5 * a.size[1] * a.R.col(1);
+            expected = 0.5 * a.volume();
+        }
+        EXPECT_NEAR(intersectionVolumeByClipping(a, b), expected, 10 * s + 1e-12) << "trial " << trial << " s " << s;
+        EXPECT_NEAR(intersectionVolume(a, b), expected, 10 * s + 1e-12) << "trial " << trial << " s " << s;
+    }
+}
+
 TEST(Box3DIoU, FrameInvariant) {
     std::mt19937_64 rng(6);
     const Box3D a = box({0.1, 0.2, 0.3}, {1.0, 0.7, 0.5}, randomRotation(rng));

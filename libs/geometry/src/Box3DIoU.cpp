@@ -62,8 +62,12 @@ Polyhedron makeBoxPolyhedron(const Eigen::Vector3d& half) {
     return poly;
 }
 
-/// Keeps the part of `face` with normal . x <= d; crossing points go to `cap`.
-void clipFace(const Face& face, const Eigen::Vector3d& normal, double d, double eps, Face& out, CapPoints& cap) {
+/// Keeps the part of `face` with normal . x <= d; the points where its edges cross the
+/// plane go to `cap`. Only crossings: for a convex solid cut by a plane they are exactly
+/// the vertices of the cross-section (a vertex on the plane whose edges all go inside
+/// would be a maximum of normal . x, so nothing would be outside). Adding kept vertices
+/// merely close to the plane would let the cap overlap a face nearly parallel to it.
+void clipFace(const Face& face, const Eigen::Vector3d& normal, double d, Face& out, CapPoints& cap) {
     out.n = 0;
     Eigen::Vector3d prev = face.p[face.n - 1];
     double prev_d = normal.dot(prev) - d;
@@ -75,10 +79,7 @@ void clipFace(const Face& face, const Eigen::Vector3d& normal, double d, double 
             out.push(x);
             cap.push(x);
         }
-        if (cur_d <= 0.0) {
-            out.push(cur);
-            if (cur_d >= -eps) cap.push(cur);
-        }
+        if (cur_d <= 0.0) out.push(cur);
         prev = cur;
         prev_d = cur_d;
     }
@@ -172,7 +173,7 @@ double intersectionVolumeByClipping(const Box3D& a, const Box3D& b) {
             cap_points.n = 0;
             for (int i = 0; i < cur->n; ++i) {
                 Face& out = next->f[next->n];
-                clipFace(cur->f[i], normal, d, eps, out, cap_points);
+                clipFace(cur->f[i], normal, d, out, cap_points);
                 if (out.n >= 3 && next->n < Polyhedron::kCapacity - 1) ++next->n;
             }
             makeCap(cap_points, normal, next->f[next->n]);

@@ -14,10 +14,12 @@ inline double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Ei
 }
 
 /// Working polygon of the clipper, structure of arrays, never zero-initialised.
-/// Capacity: the intersection of a convex n-gon and a convex m-gon has at most
-/// n + m vertices, and so has every intermediate of Sutherland-Hodgman.
+/// The intersection of a convex n-gon and a convex m-gon has at most n + m <= 32
+/// vertices, and so has every intermediate of Sutherland-Hodgman; a pass at most
+/// doubles the count (rounding on near-degenerate input), so a pass only runs on
+/// <= kCapacity / 2 vertices and never writes out of bounds.
 struct ClipBuffer {
-    static constexpr std::size_t kCapacity = 2 * ConvexPolygon::kMaxVertices;
+    static constexpr std::size_t kCapacity = 4 * ConvexPolygon::kMaxVertices;
     double x[kCapacity];
     double y[kCapacity];
     std::size_t n;
@@ -32,30 +34,32 @@ inline double twiceSignedArea(const ConvexPolygon& p) {
 }
 
 /// Sutherland-Hodgman step: keeps the part of `in` left of the directed line
-/// (ax, ay) -> (ax + ex, ay + ey). Points on the line are kept.
+/// (ax, ay) -> (ax + ex, ay + ey). Points on the line are kept. The count lives in a
+/// register (a local), not in `out`, which the compiler could not keep there.
 inline void clipByEdge(const ClipBuffer& in, double ax, double ay, double ex, double ey, ClipBuffer& out) {
-    out.n = 0;
     const std::size_t n = in.n;
+    std::size_t m = 0;
     double px = in.x[n - 1], py = in.y[n - 1];
     double ps = ex * (py - ay) - ey * (px - ax);
     for (std::size_t i = 0; i < n; ++i) {
         const double cx = in.x[i], cy = in.y[i];
         const double cs = ex * (cy - ay) - ey * (cx - ax);
-        if ((cs >= 0.0) != (ps >= 0.0) && out.n < ClipBuffer::kCapacity) {  // the edge crosses the line
+        if ((cs >= 0.0) != (ps >= 0.0)) {  // the edge crosses the line
             const double t = ps / (ps - cs);
-            out.x[out.n] = px + t * (cx - px);
-            out.y[out.n] = py + t * (cy - py);
-            ++out.n;
+            out.x[m] = px + t * (cx - px);
+            out.y[m] = py + t * (cy - py);
+            ++m;
         }
-        if (cs >= 0.0 && out.n < ClipBuffer::kCapacity) {
-            out.x[out.n] = cx;
-            out.y[out.n] = cy;
-            ++out.n;
+        if (cs >= 0.0) {
+            out.x[m] = cx;
+            out.y[m] = cy;
+            ++m;
         }
         px = cx;
         py = cy;
         ps = cs;
     }
+    out.n = m;
 }
 
 /// Exact intersection area of a with b; `b_ccw` tells b's vertex order (a's does not matter).
@@ -72,6 +76,7 @@ double clipArea(const ConvexPolygon& a, const ConvexPolygon& b, bool b_ccw) {
         // Edge j -> i of b, reversed when b is clockwise, so b's inside is on its left.
         const Eigen::Vector2d& from = b_ccw ? b.v[j] : b.v[i];
         const Eigen::Vector2d& to = b_ccw ? b.v[i] : b.v[j];
+        if (cur->n > ClipBuffer::kCapacity / 2) break;  // unreachable for convex input (<= 32)
         clipByEdge(*cur, from.x(), from.y(), to.x() - from.x(), to.y() - from.y(), *next);
         std::swap(cur, next);
         if (cur->n < 3) return 0.0;
