@@ -1,0 +1,22 @@
+#pragma once
+/// \file PathPlanner.h
+/// A* on a (robot-radius inflated) raster, 8-connected, and line-of-sight shortcutting of the
+/// resulting cell path into a few waypoints.
+
+#include <simp/sim/Raster.h>
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+namespace simp::sim {
+
+/// Shortest 8-connected path (cell centres, m) from `from` to `to` through free cells of
+/// `cspace`, or nullopt when either end is blocked or they are not connected.
+std::optional<std::vector<Eigen::Vector2d>> planPath(const Raster& cspace, const Eigen::Vector2d& from,
+                                                     const Eigen::Vector2d& to);
+
+/// Keeps only the waypoints needed so that consecutive ones see each other in `cspace`.
+std::vector<Eigen::Vector2d> shortcutPath(const Raster& cspace, const std::vector<Eigen::Vector2d>& path);
+
+}  // namespace simp::sim

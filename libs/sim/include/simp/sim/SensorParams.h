@@ -1,0 +1,75 @@
+#pragma once
+/// \file SensorParams.h
+/// Knobs of the simulated camera rig, of visibility and of the detector (sections [cameras],
+/// [visibility], [detector], [false_positives] of sim.ini; doc/simulator.md lists every key).
+
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <string>
+#include <vector>
+
+namespace simp::sim {
+
+/// [cameras]: N cameras on a ring around the robot centre, optical axes horizontal.
+struct CameraParams {
+    int count = 4;                  ///< number of cameras
+    double first_yaw_deg = 0;       ///< yaw of camera 0 (deg, 0 = robot forward, 90 = left); camera i at +i*360/count
+    double mount_radius_m = 0.1;    ///< distance of each camera from the robot centre along its yaw (m)
+    double height_m = 0.63;         ///< camera height above the floor (m)
+    double pitch_down_deg = 0;      ///< downward tilt (deg)
+    int width_px = 640, height_px = 480;
+    double fx = 380.07, fy = 379.66, cx = 324.47, cy = 237.79;  ///< intrinsics (px)
+    double rate_hz = 5;             ///< frame rate (Hz); a divisor of the odometry rate is best
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+/// [visibility]: which objects a camera can see.
+struct VisibilityParams {
+    /// Per class (simp::obs::defaultClassNames() order) minimum / maximum detection range (m,
+    /// horizontal distance camera -> box centre); 0 = no limit (maximum: default_max_range_m).
+    std::vector<double> min_range_m{0.5, 0.0, 0.0, 1.5, 1.0, 0.0, 0.0, 0.0, 0.5, 1.0, 0.0, 0.0, 0.0, 0.5};
+    std::vector<double> max_range_m{3.0, 0.0, 4.0, 4.5, 4.5, 0.0, 4.5, 3.5, 3.0, 5.0, 0.0, 3.0, 0.0, 4.0};
+    double default_max_range_m = 5.0;     ///< range limit of classes with max 0 (m)
+    double min_inside_fraction = 0.5;     ///< truncation: fraction of the 8 projected corners inside the image
+    int wall_rays = 5;                    ///< rays cast to the box centre and this-1 footprint points (>= 1)
+    double min_visible_ray_fraction = 0.4; ///< wall occlusion: fraction of rays that must reach the object
+    double self_margin_m = 0.05;          ///< rays ignore walls this close to the object's own footprint (m)
+    double max_occluded_fraction = 0.7;   ///< object occlusion: fraction of the 2D box hidden by nearer boxes
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                        std::size_t num_classes);
+};
+
+/// [detector]: what a visible object becomes.
+struct DetectorParams {
+    double detection_probability = 0.85;   ///< probability that a visible object is detected
+    double default_noise_std_m = 0.15;     ///< centre std (m) for classes without a noise model
+    double z_std_m = 0.05;                 ///< std of the box centre height (m)
+    double size_std_fraction = 0.1;        ///< relative std of each box dimension
+    double yaw_std_rad = 0.1;              ///< std of the box yaw (rad)
+    double wrong_class_probability = 0.03; ///< a true detection gets another class label
+    double confidence_true_mean = 0.85, confidence_true_std = 0.08;   ///< score of true detections
+    double confidence_false_mean = 0.55, confidence_false_std = 0.12; ///< score of false ones
+    double min_confidence = 0.3;           ///< detections scoring below are not reported
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+/// [false_positives]: phantom boxes where nothing is.
+struct FalsePositiveParams {
+    double rate_per_frame = 0.05;  ///< expected phantoms per camera frame (Poisson)
+    double range_min_m = 1.0, range_max_m = 5.0;  ///< phantom distance from the camera (m)
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+/// [people]: people walking through the floor (class "person", never in the map).
+struct PeopleParams {
+    int count = 2;
+    double speed_min_mps = 0.6, speed_max_mps = 1.2;
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+}  // namespace simp::sim

@@ -1,0 +1,41 @@
+#pragma once
+/// \file Sequence.h
+/// `simp-sim sequence`: a robot with odometry and a multi-camera 3D object detector driving
+/// through a (possibly changed) world, written as an MRPT rawlog + TUM ground truth + world dir.
+
+#include <simp/io/Tum.h>
+#include <simp/sim/SimParams.h>
+#include <simp/world/World.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace simp::sim {
+
+/// Counts of what a simulated sequence contains.
+struct SequenceSummary {
+    std::size_t steps = 0;             ///< odometry steps (action + sensory frame pairs)
+    std::size_t camera_frames = 0;     ///< CObservationObjects3D written (all cameras)
+    std::size_t true_detections = 0;  ///< detections of real map objects (right or wrong label)
+    std::size_t person_detections = 0;
+    std::size_t phantom_detections = 0;
+    ChangeSummary changes;
+    double path_length_m = 0;
+};
+
+/// Simulates one sequence in `map_world` (changed by params.changes first) and writes
+/// `out_dir`/sequence.rawlog, groundtruth.tum, world/ and overview.png. Every random choice
+/// comes from `seed`; the same inputs give byte-identical files (simulated time from
+/// params.epoch_s, never the wall clock).
+/// \throw std::runtime_error naming the file that cannot be written or the map that has no room
+/// for the robot.
+SequenceSummary simulateSequence(const world::World& map_world, const SimParams& params, std::uint64_t seed,
+                                 const std::string& out_dir);
+
+/// Draws the world (free white, walls black, unknown grey, object footprints coloured by class,
+/// person-free) and `trajectory` (red, start green) to a PNG.
+void writeOverviewPng(const world::World& world, const std::vector<io::StampedPose2D>& trajectory,
+                      const std::string& png_path);
+
+}  // namespace simp::sim

@@ -1,0 +1,48 @@
+#pragma once
+/// \file SimParams.h
+/// All knobs of `simp-sim sequence`, one struct per sim.ini section.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <simp/sim/SensorParams.h>
+#include <simp/sim/Trajectory.h>
+#include <simp/sim/WorldChanges.h>
+
+#include <string>
+
+namespace simp::sim {
+
+/// [odometry]: wheel odometry at a fixed rate with MRPT's Gaussian motion model
+/// (mrpt::obs::CActionRobotMovement2D::TMotionModelOptions::TOptions_GaussianModel fields).
+struct OdometryParams {
+    double rate_hz = 10;      ///< odometry (and simulation step) rate (Hz)
+    double a1 = 0.01;         ///< m/m
+    double a2 = 0.001 * 180.0 / M_PI;  ///< m/deg
+    double a3 = 1.0 * M_PI / 180.0;    ///< deg/m
+    double a4 = 0.05;         ///< deg/deg
+    double minStdXY = 0.005;  ///< m
+    double minStdPHI = 0.2 * M_PI / 180.0;  ///< rad
+    double noise_scale = 1.0; ///< the drawn increment noise is this times the model's std (0 = perfect odometry)
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+struct SimParams {
+    double duration_s = 120;       ///< [sequence] duration_s: simulated time (s)
+    double epoch_s = 1700000000.0; ///< [sequence] epoch_s: time stamp of the first pose (s since 1970, UTC)
+    bool progress = true;          ///< [sequence] progress: report progress on stderr
+    TrajectoryParams trajectory;
+    OdometryParams odometry;
+    CameraParams cameras;
+    VisibilityParams visibility;
+    DetectorParams detector;
+    FalsePositiveParams false_positives;
+    PeopleParams people;
+    ChangeParams changes;
+
+    /// Reads sections sequence, trajectory, odometry, cameras, visibility, detector,
+    /// false_positives, people, changes; missing keys keep defaults; bad values throw naming
+    /// section and key.
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
+};
+
+}  // namespace simp::sim

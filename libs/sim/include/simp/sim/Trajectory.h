@@ -1,0 +1,43 @@
+#pragma once
+/// \file Trajectory.h
+/// The robot's ground-truth path: it drives through free space from room to room (A* on the
+/// grid inflated by its radius, shortcut into waypoints), at 0.2-0.5 m/s, turning in place for
+/// large heading changes and now and then spinning on the spot in a room.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/Tum.h>
+#include <simp/sim/Random.h>
+#include <simp/sim/Raster.h>
+#include <simp/world/World.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace simp::sim {
+
+/// [trajectory] section of sim.ini.
+struct TrajectoryParams {
+    double robot_radius_m = 0.3;       ///< disc robot radius (m)
+    double clearance_m = 0.1;          ///< extra distance kept from obstacles when planning (m)
+    double speed_min_mps = 0.2;        ///< forward speed per leg, uniform in [min, max] (m/s)
+    double speed_max_mps = 0.5;
+    double turn_rate_radps = 0.6;      ///< maximum rotation rate (rad/s)
+    double turn_in_place_rad = 0.5;    ///< heading error above which the robot stops and turns (rad)
+    double spin_probability = 0.3;     ///< probability of a full turn on the spot at a room goal
+    double waypoint_tolerance_m = 0.1; ///< waypoint reached within this distance (m)
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+/// Room goals: for every room id of `rooms` (or, without a room map, for free cells spread
+/// over the map), the free cell of `cspace` farthest from obstacles (m, world frame).
+std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms);
+
+/// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
+/// poses). `obstacles` = walls and object footprints of the world the robot drives in.
+/// \throw std::runtime_error when no goal is reachable (e.g. an empty map).
+std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
+                                                  const TrajectoryParams& p, double t0_s, double dt_s,
+                                                  double duration_s, Rng& rng);
+
+}  // namespace simp::sim

@@ -1,0 +1,41 @@
+#pragma once
+/// \file WorldChanges.h
+/// Long-term change between the map and the world a sequence is recorded in: objects removed,
+/// moved (shifted and rotated) and added; doors closed (door object kept, gap blocked).
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <simp/sim/Random.h>
+#include <simp/world/World.h>
+
+#include <string>
+
+namespace simp::sim {
+
+/// [changes] section of sim.ini (`--changes F` sets `fraction`).
+struct ChangeParams {
+    double fraction = 0;             ///< fraction of the (non-door) objects that change, in [0, 1]
+    double shift_min_m = 0.3;        ///< a moved object is shifted by a distance in [min, max] (m)
+    double shift_max_m = 1.0;
+    double rotation_std_deg = 30;    ///< and rotated by N(0, std) (deg)
+    double door_close_fraction = -1; ///< fraction of doors closed; < 0: the same as `fraction`
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
+/// What applyChanges() did.
+struct ChangeSummary {
+    int removed = 0, moved = 0, added = 0, doors_closed = 0;
+};
+
+/// The world changed: of the n non-door objects, round(fraction * n) change, split evenly into
+/// removals, moves (an object that cannot be moved without overlap is removed) and additions
+/// (new objects of classes drawn from the map's objects, placed on free floor inside rooms).
+/// Objects never overlap each other or walls. Door closing blocks the door's wall gap in the
+/// floor plan. fraction = 0 and door_close_fraction <= 0 returns an identical copy.
+world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& rng, ChangeSummary* summary = nullptr);
+
+/// Blocks the wall gap a door object stands in (free cells between wall cells on both sides of
+/// the door along its width).
+void closeDoor(world::World& world, const world::MapObject& door);
+
+}  // namespace simp::sim

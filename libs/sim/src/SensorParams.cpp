@@ -1,0 +1,115 @@
+#include <simp/sim/SensorParams.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace simp::sim {
+namespace {
+
+void check(bool ok, const std::string& section, const std::string& key, const std::string& what) {
+    if (!ok) throw std::invalid_argument("[" + section + "] " + key + ": " + what);
+}
+bool prob(double v) { return v >= 0 && v <= 1; }
+
+std::vector<double> readPerClass(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
+                                 const std::vector<double>& def, std::size_t num_classes) {
+    const std::string text = cfg.read_string(s, key, "");
+    if (text.empty()) return def;
+    std::vector<double> out;
+    std::istringstream is(text);
+    std::string tok;
+    while (is >> tok) {
+        try {
+            std::size_t used = 0;
+            const double v = std::stod(tok, &used);
+            check(used == tok.size() && std::isfinite(v) && v >= 0, s, key, "'" + tok + "' is not a number >= 0");
+            out.push_back(v);
+        } catch (const std::logic_error&) {
+            check(false, s, key, "'" + tok + "' is not a number");
+        }
+    }
+    check(out.size() == num_classes, s, key,
+          "expected " + std::to_string(num_classes) + " values (one per class), got " + std::to_string(out.size()));
+    return out;
+}
+
+}  // namespace
+
+void CameraParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    count = cfg.read_int(s, "count", count);
+    first_yaw_deg = cfg.read_double(s, "first_yaw_deg", first_yaw_deg);
+    mount_radius_m = cfg.read_double(s, "mount_radius_m", mount_radius_m);
+    height_m = cfg.read_double(s, "height_m", height_m);
+    pitch_down_deg = cfg.read_double(s, "pitch_down_deg", pitch_down_deg);
+    width_px = cfg.read_int(s, "width_px", width_px);
+    height_px = cfg.read_int(s, "height_px", height_px);
+    fx = cfg.read_double(s, "fx", fx);
+    fy = cfg.read_double(s, "fy", fy);
+    cx = cfg.read_double(s, "cx", cx);
+    cy = cfg.read_double(s, "cy", cy);
+    rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
+    check(count >= 1 && count <= 16, s, "count", "must be in [1, 16]");
+    check(width_px > 0 && height_px > 0, s, "width_px/height_px", "must be > 0");
+    check(fx > 0 && fy > 0, s, "fx/fy", "must be > 0");
+    check(rate_hz > 0 && std::isfinite(rate_hz), s, "rate_hz", "must be > 0");
+    check(std::isfinite(height_m) && std::isfinite(mount_radius_m), s, "height_m/mount_radius_m", "must be finite");
+}
+
+void VisibilityParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
+                                      std::size_t num_classes) {
+    min_range_m = readPerClass(cfg, s, "min_range_m", min_range_m, num_classes);
+    max_range_m = readPerClass(cfg, s, "max_range_m", max_range_m, num_classes);
+    default_max_range_m = cfg.read_double(s, "default_max_range_m", default_max_range_m);
+    min_inside_fraction = cfg.read_double(s, "min_inside_fraction", min_inside_fraction);
+    wall_rays = cfg.read_int(s, "wall_rays", wall_rays);
+    min_visible_ray_fraction = cfg.read_double(s, "min_visible_ray_fraction", min_visible_ray_fraction);
+    self_margin_m = cfg.read_double(s, "self_margin_m", self_margin_m);
+    max_occluded_fraction = cfg.read_double(s, "max_occluded_fraction", max_occluded_fraction);
+    check(default_max_range_m > 0, s, "default_max_range_m", "must be > 0");
+    check(prob(min_inside_fraction), s, "min_inside_fraction", "must be in [0, 1]");
+    check(wall_rays >= 1 && wall_rays <= 17, s, "wall_rays", "must be in [1, 17]");
+    check(prob(min_visible_ray_fraction), s, "min_visible_ray_fraction", "must be in [0, 1]");
+    check(self_margin_m >= 0 && self_margin_m < 1, s, "self_margin_m", "must be in [0, 1)");
+    check(prob(max_occluded_fraction), s, "max_occluded_fraction", "must be in [0, 1]");
+}
+
+void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    detection_probability = cfg.read_double(s, "detection_probability", detection_probability);
+    default_noise_std_m = cfg.read_double(s, "default_noise_std_m", default_noise_std_m);
+    z_std_m = cfg.read_double(s, "z_std_m", z_std_m);
+    size_std_fraction = cfg.read_double(s, "size_std_fraction", size_std_fraction);
+    yaw_std_rad = cfg.read_double(s, "yaw_std_rad", yaw_std_rad);
+    wrong_class_probability = cfg.read_double(s, "wrong_class_probability", wrong_class_probability);
+    confidence_true_mean = cfg.read_double(s, "confidence_true_mean", confidence_true_mean);
+    confidence_true_std = cfg.read_double(s, "confidence_true_std", confidence_true_std);
+    confidence_false_mean = cfg.read_double(s, "confidence_false_mean", confidence_false_mean);
+    confidence_false_std = cfg.read_double(s, "confidence_false_std", confidence_false_std);
+    min_confidence = cfg.read_double(s, "min_confidence", min_confidence);
+    check(prob(detection_probability), s, "detection_probability", "must be in [0, 1]");
+    check(default_noise_std_m > 0, s, "default_noise_std_m", "must be > 0");
+    check(z_std_m >= 0 && size_std_fraction >= 0 && yaw_std_rad >= 0, s, "z_std_m/size_std_fraction/yaw_std_rad",
+          "must be >= 0");
+    check(prob(wrong_class_probability), s, "wrong_class_probability", "must be in [0, 1]");
+    check(prob(confidence_true_mean) && prob(confidence_false_mean), s, "confidence_*_mean", "must be in [0, 1]");
+    check(confidence_true_std >= 0 && confidence_false_std >= 0, s, "confidence_*_std", "must be >= 0");
+    check(prob(min_confidence), s, "min_confidence", "must be in [0, 1]");
+}
+
+void FalsePositiveParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    rate_per_frame = cfg.read_double(s, "rate_per_frame", rate_per_frame);
+    range_min_m = cfg.read_double(s, "range_min_m", range_min_m);
+    range_max_m = cfg.read_double(s, "range_max_m", range_max_m);
+    check(rate_per_frame >= 0 && rate_per_frame <= 30, s, "rate_per_frame", "must be in [0, 30]");
+    check(range_min_m > 0 && range_max_m >= range_min_m, s, "range_min_m/range_max_m", "need 0 < min <= max");
+}
+
+void PeopleParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    count = cfg.read_int(s, "count", count);
+    speed_min_mps = cfg.read_double(s, "speed_min_mps", speed_min_mps);
+    speed_max_mps = cfg.read_double(s, "speed_max_mps", speed_max_mps);
+    check(count >= 0 && count <= 100, s, "count", "must be in [0, 100]");
+    check(speed_min_mps > 0 && speed_max_mps >= speed_min_mps, s, "speed_min_mps/speed_max_mps", "need 0 < min <= max");
+}
+
+}  // namespace simp::sim

@@ -1,0 +1,40 @@
+#include <simp/obs/ObjectClasses.h>
+#include <simp/sim/SimParams.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace simp::sim {
+
+void OdometryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
+    a1 = cfg.read_double(s, "a1", a1);
+    a2 = cfg.read_double(s, "a2", a2);
+    a3 = cfg.read_double(s, "a3", a3);
+    a4 = cfg.read_double(s, "a4", a4);
+    minStdXY = cfg.read_double(s, "minStdXY", minStdXY);
+    minStdPHI = cfg.read_double(s, "minStdPHI", minStdPHI);
+    noise_scale = cfg.read_double(s, "noise_scale", noise_scale);
+    if (!(rate_hz > 0 && rate_hz <= 1000)) throw std::invalid_argument("[" + s + "] rate_hz must be in (0, 1000]");
+    for (double v : {a1, a2, a3, a4, minStdXY, minStdPHI, noise_scale})
+        if (!(v >= 0) || !std::isfinite(v))
+            throw std::invalid_argument("[" + s + "] a1..a4, minStdXY, minStdPHI and noise_scale must be finite and >= 0");
+}
+
+void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
+    duration_s = cfg.read_double("sequence", "duration_s", duration_s);
+    epoch_s = cfg.read_double("sequence", "epoch_s", epoch_s);
+    progress = cfg.read_bool("sequence", "progress", progress);
+    if (!(duration_s > 0 && duration_s <= 1e6)) throw std::invalid_argument("[sequence] duration_s must be in (0, 1e6]");
+    if (!(epoch_s >= 0 && epoch_s < 4e9)) throw std::invalid_argument("[sequence] epoch_s must be in [0, 4e9)");
+    trajectory.loadFromConfig(cfg, "trajectory");
+    odometry.loadFromConfig(cfg, "odometry");
+    cameras.loadFromConfig(cfg, "cameras");
+    visibility.loadFromConfig(cfg, "visibility", obs::defaultClassNames().size());
+    detector.loadFromConfig(cfg, "detector");
+    false_positives.loadFromConfig(cfg, "false_positives");
+    people.loadFromConfig(cfg, "people");
+    changes.loadFromConfig(cfg, "changes");
+}
+
+}  // namespace simp::sim

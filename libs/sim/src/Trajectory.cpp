@@ -1,0 +1,170 @@
+#include <mrpt/math/wrap2pi.h>
+#include <simp/sim/PathPlanner.h>
+#include <simp/sim/Trajectory.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace simp::sim {
+namespace {
+
+/// Nearest free cell centre of `cspace` within `radius_m` of p (p itself when free).
+std::optional<Eigen::Vector2d> nearestFree(const Raster& cspace, const Eigen::Vector2d& p, double radius_m) {
+    const int cx = cspace.cellX(p.x()), cy = cspace.cellY(p.y());
+    if (!cspace.isBlocked(cx, cy)) return p;
+    const int r = static_cast<int>(radius_m / cspace.resolution_m);
+    std::optional<Eigen::Vector2d> best;
+    double best_d = 1e18;
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            if (cspace.isBlocked(cx + dx, cy + dy)) continue;
+            const double d = dx * dx + dy * dy;
+            if (d < best_d) {
+                best_d = d;
+                best = Eigen::Vector2d(cspace.centreX(cx + dx), cspace.centreY(cy + dy));
+            }
+        }
+    return best;
+}
+
+/// Unicycle state and the current plan.
+struct Driver {
+    mrpt::math::TPose2D pose;
+    std::vector<Eigen::Vector2d> waypoints;
+    std::size_t next = 0;
+    double speed = 0.3;
+    double spin_left_rad = 0;  ///< remaining on-the-spot turn
+};
+
+}  // namespace
+
+void TrajectoryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    robot_radius_m = cfg.read_double(s, "robot_radius_m", robot_radius_m);
+    clearance_m = cfg.read_double(s, "clearance_m", clearance_m);
+    speed_min_mps = cfg.read_double(s, "speed_min_mps", speed_min_mps);
+    speed_max_mps = cfg.read_double(s, "speed_max_mps", speed_max_mps);
+    turn_rate_radps = cfg.read_double(s, "turn_rate_radps", turn_rate_radps);
+    turn_in_place_rad = cfg.read_double(s, "turn_in_place_rad", turn_in_place_rad);
+    spin_probability = cfg.read_double(s, "spin_probability", spin_probability);
+    waypoint_tolerance_m = cfg.read_double(s, "waypoint_tolerance_m", waypoint_tolerance_m);
+    if (!(robot_radius_m >= 0) || !(clearance_m >= 0))
+        throw std::invalid_argument("[" + s + "] robot_radius_m and clearance_m must be >= 0");
+    if (!(speed_min_mps > 0) || !(speed_max_mps >= speed_min_mps))
+        throw std::invalid_argument("[" + s + "] speed_min_mps must be > 0 and <= speed_max_mps");
+    if (!(turn_rate_radps > 0)) throw std::invalid_argument("[" + s + "] turn_rate_radps must be > 0");
+    if (!(spin_probability >= 0 && spin_probability <= 1))
+        throw std::invalid_argument("[" + s + "] spin_probability must be in [0, 1]");
+    if (!(waypoint_tolerance_m > 0)) throw std::invalid_argument("[" + s + "] waypoint_tolerance_m must be > 0");
+}
+
+std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms) {
+    const auto dist = clearance(cspace);
+    std::map<int, std::pair<float, std::size_t>> best;  // room/block id -> (clearance, cell)
+    const int block = std::max(1, static_cast<int>(5.0 / cspace.resolution_m));
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx) {
+            const std::size_t i = static_cast<std::size_t>(cy) * cspace.nx + cx;
+            if (dist[i] <= 0) continue;
+            const int id = rooms.empty() ? 1 + (cy / block) * (cspace.nx / block + 1) + cx / block
+                                         : rooms.roomAt(cspace.centreX(cx), cspace.centreY(cy));
+            if (id <= 0) continue;
+            auto it = best.find(id);
+            if (it == best.end() || dist[i] > it->second.first) best[id] = {dist[i], i};
+        }
+    std::vector<Eigen::Vector2d> goals;
+    for (const auto& [id, b] : best) {
+        const int cx = static_cast<int>(b.second % cspace.nx), cy = static_cast<int>(b.second / cspace.nx);
+        goals.emplace_back(cspace.centreX(cx), cspace.centreY(cy));
+    }
+    return goals;
+}
+
+std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
+                                                  const TrajectoryParams& p, double t0_s, double dt_s,
+                                                  double duration_s, Rng& rng) {
+    if (!(dt_s > 0) || !(duration_s >= 0)) throw std::invalid_argument("generateTrajectory: dt must be > 0, duration >= 0");
+    const Raster cspace = inflate(obstacles, p.robot_radius_m + p.clearance_m);
+    std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms);
+    if (goals.empty())
+        throw std::runtime_error("generateTrajectory: no free space for a robot of radius " +
+                                 std::to_string(p.robot_radius_m) + " m in the map");
+
+    Driver d;
+    const Eigen::Vector2d start = goals[rng.index(goals.size())];
+    d.pose = {start.x(), start.y(), rng.uniform(-M_PI, M_PI)};
+    std::vector<std::size_t> order;
+    std::size_t order_pos = 0;
+    int failures = 0;
+
+    const auto newLeg = [&]() {
+        // next room goal from a shuffled visiting order; unreachable goals are skipped
+        for (int attempt = 0; attempt < static_cast<int>(goals.size()) + 1; ++attempt) {
+            if (order_pos >= order.size()) {
+                order.resize(goals.size());
+                for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+                for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
+                order_pos = 0;
+            }
+            const Eigen::Vector2d goal = goals[order[order_pos++]];
+            const auto from = nearestFree(cspace, {d.pose.x, d.pose.y}, 0.6);
+            if (!from || (goal - *from).norm() < 0.5) continue;
+            if (auto path = planPath(cspace, *from, goal)) {
+                d.waypoints = shortcutPath(cspace, *path);
+                d.next = 1;
+                d.speed = rng.uniform(p.speed_min_mps, p.speed_max_mps);
+                return true;
+            }
+        }
+        return false;
+    };
+
+    std::vector<io::StampedPose2D> out;
+    const auto n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 1e-9)) + 1;
+    out.reserve(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        out.push_back({t0_s + static_cast<double>(k) * dt_s, d.pose});
+        double v = 0, w = 0;
+        if (d.spin_left_rad > 0) {
+            w = std::min(p.turn_rate_radps, d.spin_left_rad / dt_s);
+            d.spin_left_rad -= w * dt_s;
+        } else {
+            while (d.next < d.waypoints.size() &&
+                   (d.waypoints[d.next] - Eigen::Vector2d(d.pose.x, d.pose.y)).norm() < p.waypoint_tolerance_m) {
+                ++d.next;
+                if (d.next == d.waypoints.size() && rng.bernoulli(p.spin_probability)) d.spin_left_rad = 2 * M_PI;
+            }
+            if (d.next >= d.waypoints.size() && d.spin_left_rad <= 0 && failures < 3) {
+                if (!newLeg()) ++failures;  // nowhere to go: stand still
+            }
+            if (d.next < d.waypoints.size() && d.spin_left_rad <= 0) {
+                const Eigen::Vector2d target = d.waypoints[d.next];
+                const double dist = (target - Eigen::Vector2d(d.pose.x, d.pose.y)).norm();
+                const double err = mrpt::math::wrapToPi(std::atan2(target.y() - d.pose.y, target.x() - d.pose.x) - d.pose.phi);
+                if (std::abs(err) > p.turn_in_place_rad) {
+                    w = std::copysign(std::min(p.turn_rate_radps, std::abs(err) / dt_s), err);  // turn in place
+                } else {
+                    w = std::clamp(2.0 * err, -p.turn_rate_radps, p.turn_rate_radps);
+                    const bool last = d.next + 1 == d.waypoints.size();
+                    v = std::min(d.speed, last ? std::max(0.1, dist) : d.speed);
+                    v = std::min(v, dist / dt_s);
+                }
+            }
+        }
+        // exact unicycle integration over dt
+        if (std::abs(w) < 1e-9) {
+            d.pose.x += v * dt_s * std::cos(d.pose.phi);
+            d.pose.y += v * dt_s * std::sin(d.pose.phi);
+        } else {
+            const double phi1 = d.pose.phi + w * dt_s;
+            d.pose.x += v / w * (std::sin(phi1) - std::sin(d.pose.phi));
+            d.pose.y -= v / w * (std::cos(phi1) - std::cos(d.pose.phi));
+            d.pose.phi = phi1;
+        }
+        d.pose.phi = mrpt::math::wrapToPi(d.pose.phi);
+    }
+    return out;
+}
+
+}  // namespace simp::sim
