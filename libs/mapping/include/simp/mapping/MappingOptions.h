@@ -1,0 +1,92 @@
+#pragma once
+/// \file MappingOptions.h
+/// Every threshold of the object map construction (paper Sec. "3D Semantic Map
+/// Construction"), loadable from an MRPT .ini section (config_ini/mapping.ini documents
+/// each key, its unit and its source).
+
+#include <mrpt/config/CLoadableOptions.h>
+
+#include <map>
+#include <string>
+
+namespace simp::mapping {
+
+/// Per-class detection filter: a detection of the class is used when its confidence is
+/// >= min_confidence and the distance camera -> box centre is in [min_range_m, max_range_m].
+/// max_range_m <= 0 disables the class (the authors' convention in mapping_args.json).
+struct ClassFilter {
+    double min_confidence = 0.5;  ///< detector score in [0, 1]
+    double min_range_m = 0.0;     ///< m
+    double max_range_m = 5.0;     ///< m; <= 0 = class not mapped
+};
+
+/// Which map objects a frame may update.
+enum class RoomUpdatePolicy {
+    CurrentRoom,  ///< only objects (and detections) in the robot's current room (the paper's)
+    All           ///< no room filter
+};
+
+struct MappingOptions : public mrpt::config::CLoadableOptions {
+    /// @name Local map integration trigger (the d_xy / d_theta of the paper)
+    /// @{
+    double trigger_dist_m = 0.2;     ///< integrate m^_g into m_g after the robot moved this far (m); authors' odom_trigerTH[0]
+    double trigger_angle_rad = 0.1;  ///< ... or turned this much (rad); authors' odom_trigerTH[1]
+    /// @}
+
+    /// @name Association and map update (Eq. costfunc)
+    /// @{
+    double tau_cost = 0.3;           ///< merge when C < tau_cost; authors' costTH
+    double tau_purge = 0.5;          ///< purge when n_match / n_skip < tau_purge (empirical, paper)
+    int min_local_detections = 1;    ///< a local object needs this many detections to be integrated; authors' totalSeenTH
+    double default_noise_sigma_m = 0.2;  ///< isotropic sigma (m, b = 2) of C_cen for classes without a noise model
+    /// @}
+
+    /// @name Visibility (I_active)
+    /// @{
+    double truncation_threshold = 0.5;   ///< projected box fraction outside the image above which an object is inactive; authors' truncTH
+    double max_occluded_fraction = 0.5;  ///< fraction of the rendered box hidden by other boxes / walls above which it is inactive
+    int zbuffer_downscale = 8;           ///< z-buffer pixel = this many image pixels per side (640x480 -> 80x60)
+    double wall_depth_margin_m = 0.3;    ///< a box pixel up to this far behind the first wall cell counts as visible (m)
+    double wall_cast_max_m = 12.0;       ///< walls farther than this do not occlude (m)
+    double near_plane_m = 0.05;          ///< camera near clipping plane (m)
+    double default_fx_px = 380.07;       ///< intrinsics used when an observation has none (authors' K, 640x480)
+    double default_fy_px = 379.66;
+    double default_cx_px = 324.47;
+    double default_cy_px = 237.79;
+    /// @}
+
+    /// @name Detection filter
+    /// @{
+    ClassFilter default_filter;                      ///< classes not listed in per_class
+    std::map<std::string, ClassFilter> per_class;    ///< by class name
+    /// The filter of a class (per_class entry, else default_filter).
+    const ClassFilter& filterOf(const std::string& class_name) const;
+    /// @}
+
+    /// @name Rooms
+    /// @{
+    RoomUpdatePolicy room_policy = RoomUpdatePolicy::CurrentRoom;
+    double room_door_width_m = 1.0;      ///< erosion removes openings up to this width (m)
+    double room_min_area_m2 = 1.0;       ///< eroded components smaller than this are not rooms (m^2)
+    double room_search_radius_m = 0.5;   ///< a point in a wall / furniture cell takes the nearest room within this (m)
+    /// @}
+
+    /// Defaults: the values above, per-class filters of the authors' mapping_args.json.
+    MappingOptions();
+
+    /// Reads section `section`; every key optional (absent = keep the current value).
+    /// Per-class filters: keys `class_min_confidence`, `class_min_range_m`, `class_max_range_m`,
+    /// each a comma-separated list `name:value` (names may contain spaces).
+    /// \throw std::invalid_argument naming the key for a malformed or out-of-range value.
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+    void dumpToTextStream(std::ostream& out) const override;
+
+    /// \throw std::invalid_argument naming the field when a value is out of its range.
+    void validate() const;
+};
+
+/// Parses "name:value, name:value" (names trimmed, may contain spaces).
+/// \throw std::invalid_argument naming `key` and the entry when malformed.
+std::map<std::string, double> parseClassValueList(const std::string& text, const std::string& key);
+
+}  // namespace simp::mapping

@@ -1,0 +1,108 @@
+#pragma once
+/// \file ObjectMapBuilder.h
+/// Metric-semantic object map construction from posed 3D object detections (paper Sec.
+/// "3D Semantic Map Construction"): detections aggregate into a short-term local map m^_g,
+/// which is integrated into the global object map m_g after the robot moved d_xy or turned
+/// d_theta (Hungarian association on Eq. costfunc, weighted merge, n_skip / n_match, purge).
+
+#include <mrpt/poses/CPose3D.h>
+#include <simp/mapping/MappingOptions.h>
+#include <simp/mapping/Visibility.h>
+#include <simp/mapping/WallGrid.h>
+#include <simp/obs/CObservationObjects3D.h>
+#include <simp/world/ObjectMapData.h>
+#include <simp/world/World.h>
+
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace simp::mapping {
+
+/// Counters of what the builder did (for progress output and tests).
+struct BuilderStats {
+    std::size_t frames = 0;              ///< insert() calls
+    std::size_t detections = 0;          ///< detections seen
+    std::size_t rejected_class = 0;      ///< class disabled (max range <= 0)
+    std::size_t rejected_confidence = 0; ///< below the class confidence threshold
+    std::size_t rejected_range = 0;      ///< outside the class range
+    std::size_t rejected_room = 0;       ///< centre in another room than the robot's
+    std::size_t rejected_invalid = 0;    ///< non-finite / degenerate box
+    std::size_t integrations = 0;        ///< local maps integrated (flush with content)
+    std::size_t merged = 0;              ///< local objects merged into map objects
+    std::size_t added = 0;               ///< new map objects
+    std::size_t purged = 0;              ///< map objects removed (n_match / n_skip < tau_purge)
+};
+
+/// One object of the short-term local map m^_g.
+struct LocalObject {
+    int class_id = 0;     ///< index into the map's class_names
+    geometry::Box3D box;  ///< world frame, canonical upright
+    int n_match = 1;      ///< detections aggregated
+};
+
+class ObjectMapBuilder {
+   public:
+    using TOptions = MappingOptions;
+
+    explicit ObjectMapBuilder(const TOptions& options = TOptions());
+
+    /// The floor plan whose walls occlude, and its rooms; an empty `rooms` is replaced by
+    /// segmentRooms() of the floor plan with the options' door width / minimum area.
+    /// Recomputes the room id of every map object.
+    void setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms);
+    /// Replaces the global map m_g (class list, class noise, objects); pending local map dropped.
+    /// \throw std::invalid_argument naming the object index when a box is invalid or its class id unknown.
+    void setMap(const world::ObjectMapData& map);
+
+    /// Inserts the detections of one camera frame taken with the robot at `robot_pose` (world).
+    /// Several cameras of one time step are inserted one after another with the same pose.
+    /// Integrates the pending local map first when the robot moved more than trigger_dist_m or
+    /// turned more than trigger_angle_rad since the local map was started.
+    /// Classes unknown to the map are appended to its class list (by name).
+    void insert(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose);
+    /// Integrates the pending local map into m_g (no-op when empty).
+    void flush();
+
+    const world::ObjectMapData& map() const { return m_g; }
+    const std::vector<LocalObject>& localMap() const { return m_local; }
+    const world::RoomMap& rooms() const { return m_rooms; }
+    const BuilderStats& stats() const { return m_stats; }
+    TOptions& options() { return m_options; }
+    const TOptions& options() const { return m_options; }
+
+    /// Room id at a world point: the room map's, else the nearest non-zero id within
+    /// room_search_radius_m; 0 when there is no room map or none is near.
+    int roomOf(double x_m, double y_m) const;
+    /// The camera of an observation in the world (intrinsics of the observation, else the defaults).
+    PinholeCamera cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const;
+
+    /// Visibility of the map objects in one camera (exposed for tests): per map object, true
+    /// when active (I_active = 1: in the frustum and range, not truncated, not occluded, in the
+    /// current room) and true when an association candidate (some pixel visible).
+    void visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
+                    std::vector<bool>& candidate);
+
+   private:
+    int mapClassOf(const std::string& name);
+    world::NoiseModel noiseOfClass(int class_id) const;
+    void insertIntoLocalMap(const std::vector<LocalObject>& detections);
+
+    TOptions m_options;
+    world::ObjectMapData m_g;       ///< the global object map m_g
+    std::vector<LocalObject> m_local;  ///< the local map m^_g
+    std::set<std::int64_t> m_window_active;     ///< map ids active in some frame of the window
+    std::set<std::int64_t> m_window_candidates; ///< map ids visible in some frame of the window
+    std::optional<mrpt::poses::CPose3D> m_window_start;  ///< robot pose when m^_g was started
+    std::int64_t m_next_id = 1;
+
+    WallGrid m_walls;
+    world::RoomMap m_rooms;
+    VisibilityRenderer m_renderer;
+    std::vector<geometry::Box3D> m_boxes_scratch;
+    std::vector<BoxView> m_views_scratch;
+    BuilderStats m_stats;
+};
+
+}  // namespace simp::mapping

@@ -1,0 +1,36 @@
+#pragma once
+/// \file WallGrid.h
+/// The walls of a floor plan as a binary grid, with 2D ray casting: the occluders of
+/// the visibility test (walls extruded vertically without limit).
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <opencv2/core.hpp>
+
+#include <Eigen/Core>
+
+namespace simp::mapping {
+
+class WallGrid {
+   public:
+    WallGrid() = default;
+    /// Cells with free-probability < max_free_prob_of_wall (MRPT getCell(), 0 = occupied) are walls;
+    /// unknown cells (0.5) do not block with the default 0.35.
+    explicit WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall = 0.35);
+
+    bool empty() const { return m_wall.empty(); }
+    /// True when the world point (m) falls in a wall cell (false outside the grid).
+    bool isWall(double x_m, double y_m) const;
+
+    /// Distance (m) along the horizontal ray from `origin_m` in direction `dir` (need not be unit;
+    /// only xy used) to the boundary of the first wall cell, or +infinity when none within max_dist_m.
+    /// A ray starting inside a wall cell returns 0. Amanatides-Woo grid traversal.
+    double castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir, double max_dist_m) const;
+
+    const cv::Mat1b& cells() const { return m_wall; }  ///< row = grid cy (y up), 255 = wall
+
+   private:
+    cv::Mat1b m_wall;
+    double m_x_min = 0, m_y_min = 0, m_res = 0.05;
+};
+
+}  // namespace simp::mapping

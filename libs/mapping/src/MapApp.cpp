@@ -1,0 +1,162 @@
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/poses/CPose2D.h>
+#include <simp/io/Tum.h>
+#include <simp/mapping/MapApp.h>
+#include <simp/mapping/MapRendering.h>
+#include <simp/obs/RawlogReader.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <stdexcept>
+
+namespace simp::mapping {
+namespace fs = std::filesystem;
+
+MapApp::MapApp() : log(&std::cout) {}
+
+bool MapApp::initialize(int argc, const char* const* argv) {
+    TCLAP::CmdLine cmd("simp-map: builds a 3D object map over the floor plan of a world from posed detections "
+                       "(doc/mapping.md)", ' ', "1.0");
+    TCLAP::ValueArg<std::string> world("", "world", "world directory W (its floor plan and rooms are used, not its objects)",
+                                       true, "", "W", cmd);
+    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "rawlog of CObservationObjects3D (Q/sequence.rawlog)", true, "",
+                                        "FILE", cmd);
+    TCLAP::ValueArg<std::string> poses("", "poses", "robot poses, TUM file (Q/groundtruth.tum)", true, "", "FILE", cmd);
+    TCLAP::ValueArg<std::string> out("", "out", "output world directory M", true, "", "M", cmd);
+    TCLAP::ValueArg<std::string> config("", "config", ".ini with a [mapping] section (config_ini/mapping.ini)", false, "",
+                                        "INI", cmd);
+    TCLAP::SwitchArg odom("", "odometry-only",
+                          "use the rawlog's integrated odometry (from the first TUM pose) instead of the TUM poses", cmd);
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h" || a == "--version") {
+            std::vector<const char*> v(argv, argv + argc);
+            cmd.parse(argc, v.data());  // prints usage / version
+            return false;
+        }
+    }
+    std::vector<const char*> v(argv, argv + argc);
+    if (!cmd.parse(argc, v.data()))
+        throw std::invalid_argument("simp-map: bad command line (the parser's message is above); see --help");
+    MapAppArgs a;
+    a.world_dir = world.getValue();
+    a.rawlog_path = rawlog.getValue();
+    a.poses_path = poses.getValue();
+    a.out_dir = out.getValue();
+    a.config_path = config.getValue();
+    a.odometry_only = odom.getValue();
+    initialize(a);
+    return true;
+}
+
+void MapApp::initialize(const MapAppArgs& args) {
+    m_args = args;
+    if (!fs::is_directory(args.world_dir)) throw std::runtime_error("world directory '" + args.world_dir + "' does not exist");
+    if (!fs::exists(args.rawlog_path)) throw std::runtime_error("rawlog '" + args.rawlog_path + "' does not exist");
+    if (!fs::exists(args.poses_path)) throw std::runtime_error("poses file '" + args.poses_path + "' does not exist");
+    if (args.out_dir.empty()) throw std::invalid_argument("simp-map: --out must not be empty");
+    MappingOptions opts;
+    if (!args.config_path.empty()) {
+        if (!fs::exists(args.config_path)) throw std::runtime_error("config file '" + args.config_path + "' does not exist");
+        mrpt::config::CConfigFile ini(args.config_path);
+        try {
+            opts.loadFromConfigFile(ini, "mapping");
+        } catch (const std::exception& e) {
+            throw std::invalid_argument(args.config_path + ": " + e.what());
+        }
+    }
+    m_builder = ObjectMapBuilder(opts);
+}
+
+world::World MapApp::loadFloorPlanWorld() const {
+    const fs::path dir(m_args.world_dir);
+    if (fs::exists(dir / "objects.json")) return world::loadWorld(m_args.world_dir);
+    // A floor plan without objects: floorplan.yaml (+ rooms.png).
+    world::World w;
+    const std::string yaml = (dir / "floorplan.yaml").string();
+    if (!fs::exists(yaml)) throw std::runtime_error(yaml + ": missing (a world directory needs floorplan.yaml)");
+    world::loadRosMap(yaml, w.floorplan);
+    if (fs::exists(dir / "rooms.png")) {
+        const world::RosMapYaml meta = world::readRosMapYaml(yaml);
+        w.rooms = world::loadRoomMap((dir / "rooms.png").string(), meta.resolution_m, meta.origin_x_m, meta.origin_y_m);
+    }
+    return w;
+}
+
+void MapApp::run() {
+    std::ostream& out = *log;
+    world::World w = loadFloorPlanWorld();
+    out << "simp-map: world '" << m_args.world_dir << "': floor plan " << w.floorplan.getSizeX() << "x"
+        << w.floorplan.getSizeY() << " cells, " << (w.rooms.empty() ? "no rooms.png (segmenting rooms)" : "rooms.png")
+        << ", " << w.objects.class_names.size() << " classes (its " << w.objects.objects.size()
+        << " objects are not used)\n";
+
+    // Start from an empty map with W's class list and class noise models.
+    world::ObjectMapData start;
+    start.class_names = w.objects.class_names;
+    start.class_noise = w.objects.class_noise;
+    start.rooms = w.objects.rooms;
+    start.room_categories = w.objects.room_categories;
+    m_builder.setMap(start);
+    m_builder.setFloorPlan(w.floorplan, w.rooms);
+
+    const std::vector<io::StampedPose2D> traj = io::readTum(m_args.poses_path);
+    if (traj.empty()) throw std::runtime_error(m_args.poses_path + ": no poses");
+    const std::vector<obs::RawlogFrame> frames = obs::readRawlog(m_args.rawlog_path);
+    out << "simp-map: " << frames.size() << " frames in '" << m_args.rawlog_path << "', " << traj.size()
+        << " poses in '" << m_args.poses_path << "'" << (m_args.odometry_only ? " (odometry only)" : "") << "\n";
+
+    mrpt::poses::CPose2D odom_pose(traj.front().pose);
+    m_frames_mapped = m_frames_without_pose = 0;
+    std::size_t next_report = 0;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const obs::RawlogFrame& fr = frames[f];
+        if (fr.odometry_increment) odom_pose = odom_pose + mrpt::poses::CPose2D(*fr.odometry_increment);
+        mrpt::math::TPose2D pose2d;
+        if (m_args.odometry_only) {
+            pose2d = odom_pose.asTPose();
+        } else if (!io::interpolatePose(traj, mrpt::Clock::toDouble(fr.timestamp), pose2d)) {
+            ++m_frames_without_pose;
+            continue;
+        }
+        const mrpt::poses::CPose3D robot_pose{mrpt::poses::CPose2D(pose2d)};
+        for (const auto& o : fr.observations)
+            if (o) m_builder.insert(*o, robot_pose);
+        ++m_frames_mapped;
+        if (f >= next_report) {
+            out << "simp-map: frame " << f + 1 << "/" << frames.size() << " (" << (100 * (f + 1) / frames.size())
+                << " %), " << m_builder.map().objects.size() << " objects\n";
+            next_report += std::max<std::size_t>(1, frames.size() / 10);
+        }
+    }
+    m_builder.flush();
+    if (m_frames_without_pose > 0)
+        out << "simp-map: warning: " << m_frames_without_pose
+            << " frames outside the time span of the poses file were skipped\n";
+    if (m_frames_mapped == 0)
+        throw std::runtime_error("simp-map: no frame of '" + m_args.rawlog_path + "' has a pose in '" + m_args.poses_path +
+                                 "' (timestamps do not overlap)");
+
+    // Output world M: floor plan and rooms used + the built objects.
+    world::World result;
+    result.floorplan = w.floorplan;
+    result.rooms = m_builder.rooms();
+    result.objects = m_builder.map();
+    world::saveWorld(result, m_args.out_dir);
+    writeObjectMapPng(result.floorplan, result.objects, (fs::path(m_args.out_dir) / "map.png").string());
+
+    const BuilderStats& s = m_builder.stats();
+    out << "simp-map: " << s.frames << " camera frames, " << s.detections << " detections (rejected: " << s.rejected_class
+        << " class disabled, " << s.rejected_confidence << " confidence, " << s.rejected_range << " range, "
+        << s.rejected_room << " other room, " << s.rejected_invalid << " invalid), " << s.integrations
+        << " integrations, " << s.merged << " merges, " << s.added << " added, " << s.purged << " purged\n";
+    std::map<std::string, int> per_class;
+    for (const auto& o : result.objects.objects) ++per_class[result.objects.class_names[o.class_id]];
+    out << "simp-map: " << result.objects.objects.size() << " objects written to '" << m_args.out_dir << "'\n";
+    for (const auto& [name, n] : per_class) out << "  " << std::left << std::setw(20) << name << n << "\n";
+}
+
+}  // namespace simp::mapping

@@ -1,0 +1,205 @@
+#include <mrpt/config/CConfigFileBase.h>
+#include <simp/mapping/MappingOptions.h>
+
+#include <cmath>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
+
+namespace simp::mapping {
+namespace {
+
+std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t\r\n\"");
+    if (b == std::string::npos) return {};
+    const auto e = s.find_last_not_of(" \t\r\n\"");
+    return s.substr(b, e - b + 1);
+}
+
+void requireFinite(double v, const char* name) {
+    if (!std::isfinite(v)) throw std::invalid_argument(std::string("mapping option '") + name + "' is not a finite number");
+}
+
+void requireRange(double v, double lo, double hi, const char* name) {
+    requireFinite(v, name);
+    if (v < lo || v > hi) {
+        std::ostringstream s;
+        s << "mapping option '" << name << "' = " << v << " outside [" << lo << ", " << hi << "]";
+        throw std::invalid_argument(s.str());
+    }
+}
+
+/// Reads a double key; absent keeps `value`; non-numeric text throws naming the key.
+void readDouble(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, double& value) {
+    const std::string text = trim(c.read_string(section, key, "", false));
+    if (text.empty()) return;
+    try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (trim(text.substr(used)).size() != 0) throw std::invalid_argument("trailing text");
+        value = v;
+    } catch (const std::exception&) {
+        throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "' is not a number");
+    }
+}
+
+void readInt(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, int& value) {
+    double v = value;
+    readDouble(c, section, key, v);
+    if (v != std::floor(v)) throw std::invalid_argument(std::string("mapping option [") + section + "] " + key + " must be an integer");
+    value = static_cast<int>(v);
+}
+
+// The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist).
+struct AuthorsRow {
+    const char* name;
+    double conf, min_dist, max_dist;
+};
+constexpr AuthorsRow kAuthorsFilters[] = {
+    {"sink", 0.7, 0.5, 3.0},     {"door", 0.0, 0.0, 0.0},         {"oven", 0.8, 0.0, 4.0},
+    {"board", 0.9, 1.5, 4.5},    {"table", 0.7, 1.0, 4.5},        {"box", 0.0, 0.0, 0.0},
+    {"potted plant", 0.95, 0.0, 4.5}, {"drawers", 0.8, 0.0, 3.5}, {"sofa", 0.7, 0.5, 3.0},
+    {"cabinet", 0.9, 1.0, 5.0},  {"chair", 0.0, 0.0, 0.0},        {"fire extinguisher", 0.9, 0.0, 3.0},
+    {"person", 0.0, 0.0, 0.0},   {"desk", 0.8, 0.5, 4.0},
+};
+
+}  // namespace
+
+std::map<std::string, double> parseClassValueList(const std::string& text, const std::string& key) {
+    std::map<std::string, double> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        if (trim(item).empty()) continue;
+        const auto colon = item.rfind(':');
+        if (colon == std::string::npos)
+            throw std::invalid_argument("mapping option '" + key + "': entry '" + trim(item) + "' is not 'class:value'");
+        const std::string name = trim(item.substr(0, colon));
+        const std::string num = trim(item.substr(colon + 1));
+        if (name.empty()) throw std::invalid_argument("mapping option '" + key + "': entry '" + trim(item) + "' has no class name");
+        try {
+            std::size_t used = 0;
+            const double v = std::stod(num, &used);
+            if (used != num.size() || !std::isfinite(v)) throw std::invalid_argument("bad");
+            out[name] = v;
+        } catch (const std::exception&) {
+            throw std::invalid_argument("mapping option '" + key + "': value '" + num + "' of class '" + name + "' is not a finite number");
+        }
+    }
+    return out;
+}
+
+MappingOptions::MappingOptions() {
+    for (const auto& r : kAuthorsFilters) per_class[r.name] = ClassFilter{r.conf, r.min_dist, r.max_dist};
+}
+
+const ClassFilter& MappingOptions::filterOf(const std::string& class_name) const {
+    const auto it = per_class.find(class_name);
+    return it == per_class.end() ? default_filter : it->second;
+}
+
+void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+    readDouble(c, s, "trigger_dist_m", trigger_dist_m);
+    readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
+    readDouble(c, s, "tau_cost", tau_cost);
+    readDouble(c, s, "tau_purge", tau_purge);
+    readInt(c, s, "min_local_detections", min_local_detections);
+    readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
+    readDouble(c, s, "truncation_threshold", truncation_threshold);
+    readDouble(c, s, "max_occluded_fraction", max_occluded_fraction);
+    readInt(c, s, "zbuffer_downscale", zbuffer_downscale);
+    readDouble(c, s, "wall_depth_margin_m", wall_depth_margin_m);
+    readDouble(c, s, "wall_cast_max_m", wall_cast_max_m);
+    readDouble(c, s, "near_plane_m", near_plane_m);
+    readDouble(c, s, "default_fx_px", default_fx_px);
+    readDouble(c, s, "default_fy_px", default_fy_px);
+    readDouble(c, s, "default_cx_px", default_cx_px);
+    readDouble(c, s, "default_cy_px", default_cy_px);
+    readDouble(c, s, "default_min_confidence", default_filter.min_confidence);
+    readDouble(c, s, "default_min_range_m", default_filter.min_range_m);
+    readDouble(c, s, "default_max_range_m", default_filter.max_range_m);
+    readDouble(c, s, "room_door_width_m", room_door_width_m);
+    readDouble(c, s, "room_min_area_m2", room_min_area_m2);
+    readDouble(c, s, "room_search_radius_m", room_search_radius_m);
+
+    const std::string policy = trim(c.read_string(s, "room_update_policy", "", false));
+    if (policy == "current_room") room_policy = RoomUpdatePolicy::CurrentRoom;
+    else if (policy == "all") room_policy = RoomUpdatePolicy::All;
+    else if (!policy.empty())
+        throw std::invalid_argument("mapping option [" + s + "] room_update_policy = '" + policy + "': expected current_room or all");
+
+    const std::pair<const char*, double ClassFilter::*> lists[] = {
+        {"class_min_confidence", &ClassFilter::min_confidence},
+        {"class_min_range_m", &ClassFilter::min_range_m},
+        {"class_max_range_m", &ClassFilter::max_range_m}};
+    for (const auto& [key, member] : lists) {
+        const std::string text = c.read_string(s, key, "", false);
+        if (trim(text).empty()) continue;
+        for (const auto& [name, v] : parseClassValueList(text, key)) {
+            auto it = per_class.find(name);
+            if (it == per_class.end()) it = per_class.emplace(name, default_filter).first;
+            it->second.*member = v;
+        }
+    }
+    validate();
+}
+
+void MappingOptions::validate() const {
+    requireRange(trigger_dist_m, 0.0, 1e3, "trigger_dist_m");
+    requireRange(trigger_angle_rad, 0.0, 10.0, "trigger_angle_rad");
+    requireRange(tau_cost, 0.0, 1.0, "tau_cost");
+    requireRange(tau_purge, 0.0, 1e6, "tau_purge");
+    requireRange(min_local_detections, 1, 1e6, "min_local_detections");
+    requireRange(default_noise_sigma_m, 1e-6, 1e3, "default_noise_sigma_m");
+    requireRange(truncation_threshold, 0.0, 1.0, "truncation_threshold");
+    requireRange(max_occluded_fraction, 0.0, 1.0, "max_occluded_fraction");
+    requireRange(zbuffer_downscale, 1, 64, "zbuffer_downscale");
+    requireRange(wall_depth_margin_m, 0.0, 1e3, "wall_depth_margin_m");
+    requireRange(wall_cast_max_m, 0.0, 1e4, "wall_cast_max_m");
+    requireRange(near_plane_m, 1e-4, 10.0, "near_plane_m");
+    requireRange(default_fx_px, 1e-3, 1e6, "default_fx_px");
+    requireRange(default_fy_px, 1e-3, 1e6, "default_fy_px");
+    requireFinite(default_cx_px, "default_cx_px");
+    requireFinite(default_cy_px, "default_cy_px");
+    requireRange(room_door_width_m, 0.0, 100.0, "room_door_width_m");
+    requireRange(room_min_area_m2, 0.0, 1e6, "room_min_area_m2");
+    requireRange(room_search_radius_m, 0.0, 100.0, "room_search_radius_m");
+    auto checkFilter = [](const ClassFilter& f, const std::string& who) {
+        const std::string p = who + ".";
+        requireRange(f.min_confidence, 0.0, 1.0, (p + "min_confidence").c_str());
+        requireRange(f.min_range_m, 0.0, 1e4, (p + "min_range_m").c_str());
+        requireRange(f.max_range_m, 0.0, 1e4, (p + "max_range_m").c_str());
+    };
+    checkFilter(default_filter, "default");
+    for (const auto& [name, f] : per_class) checkFilter(f, "class '" + name + "'");
+}
+
+void MappingOptions::dumpToTextStream(std::ostream& o) const {
+    o << "\n----------- [simp::mapping::MappingOptions] ------------\n";
+    o << "trigger_dist_m        = " << trigger_dist_m << " m\n";
+    o << "trigger_angle_rad     = " << trigger_angle_rad << " rad\n";
+    o << "tau_cost              = " << tau_cost << "\n";
+    o << "tau_purge             = " << tau_purge << "\n";
+    o << "min_local_detections  = " << min_local_detections << "\n";
+    o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
+    o << "truncation_threshold  = " << truncation_threshold << "\n";
+    o << "max_occluded_fraction = " << max_occluded_fraction << "\n";
+    o << "zbuffer_downscale     = " << zbuffer_downscale << " px\n";
+    o << "wall_depth_margin_m   = " << wall_depth_margin_m << " m\n";
+    o << "wall_cast_max_m       = " << wall_cast_max_m << " m\n";
+    o << "near_plane_m          = " << near_plane_m << " m\n";
+    o << "default K (fx fy cx cy) = " << default_fx_px << " " << default_fy_px << " " << default_cx_px << " "
+      << default_cy_px << " px\n";
+    o << "room_update_policy    = " << (room_policy == RoomUpdatePolicy::CurrentRoom ? "current_room" : "all") << "\n";
+    o << "room_door_width_m     = " << room_door_width_m << " m\n";
+    o << "room_min_area_m2      = " << room_min_area_m2 << " m^2\n";
+    o << "room_search_radius_m  = " << room_search_radius_m << " m\n";
+    o << "default filter: conf >= " << default_filter.min_confidence << ", range [" << default_filter.min_range_m << ", "
+      << default_filter.max_range_m << "] m\n";
+    for (const auto& [name, f] : per_class)
+        o << "class '" << name << "': conf >= " << f.min_confidence << ", range [" << f.min_range_m << ", "
+          << f.max_range_m << "] m" << (f.max_range_m <= 0 ? " (disabled)" : "") << "\n";
+}
+
+}  // namespace simp::mapping

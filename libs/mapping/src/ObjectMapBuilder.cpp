@@ -1,0 +1,190 @@
+// ObjectMapBuilder: set-up, per-frame insertion and the short-term local map m^_g.
+// The integration into m_g is in ObjectMapBuilder_integrate.cpp, visibility in
+// ObjectMapBuilder_visibility.cpp.
+#include <mrpt/math/wrap2pi.h>
+#include <simp/geometry/Hungarian.h>
+#include <simp/mapping/AssociationCost.h>
+#include <simp/mapping/ObjectMapBuilder.h>
+#include <simp/mapping/RoomSegmentation.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace simp::mapping {
+namespace {
+/// Cost of a pair that must never be associated (different classes); > any Eq. costfunc value.
+constexpr double kForbiddenCost = 2.0;
+}  // namespace
+
+ObjectMapBuilder::ObjectMapBuilder(const TOptions& options) : m_options(options) { m_options.validate(); }
+
+void ObjectMapBuilder::setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms) {
+    m_walls = WallGrid(floorplan);
+    if (!rooms.empty()) {
+        m_rooms = rooms;
+    } else {
+        RoomSegmentationParams p;
+        p.door_width_m = m_options.room_door_width_m;
+        p.min_room_area_m2 = m_options.room_min_area_m2;
+        m_rooms = segmentRooms(floorplan, p);
+    }
+    for (auto& o : m_g.objects) o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+}
+
+void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
+    world::ObjectMapData g = map;
+    g.class_noise.resize(g.class_names.size());
+    std::int64_t max_id = 0;
+    for (std::size_t i = 0; i < g.objects.size(); ++i) {
+        auto& o = g.objects[i];
+        if (o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= g.class_names.size())
+            throw std::invalid_argument("ObjectMapBuilder::setMap: object " + std::to_string(i) + " (id " +
+                                        std::to_string(o.id) + ") has unknown class id " + std::to_string(o.class_id));
+        if (!o.box.isValid(1e-4))
+            throw std::invalid_argument("ObjectMapBuilder::setMap: object " + std::to_string(i) + " (id " +
+                                        std::to_string(o.id) + ") has an invalid box (NaN, size <= 0 or not a rotation)");
+        o.box = geometry::canonicalizeUpright(o.box);
+        o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+        max_id = std::max(max_id, o.id);
+    }
+    m_g = std::move(g);
+    m_next_id = max_id + 1;
+    m_local.clear();
+    m_window_active.clear();
+    m_window_candidates.clear();
+    m_window_start.reset();
+}
+
+int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
+    if (m_rooms.empty()) return 0;
+    const double res = m_rooms.resolution_m;
+    const int col = static_cast<int>(std::floor((x_m - m_rooms.origin_x_m) / res));
+    const int row = m_rooms.ids.rows - 1 - static_cast<int>(std::floor((y_m - m_rooms.origin_y_m) / res));
+    auto at = [&](int r, int c) -> int {
+        if (r < 0 || c < 0 || r >= m_rooms.ids.rows || c >= m_rooms.ids.cols) return 0;
+        return m_rooms.ids(r, c);
+    };
+    if (const int id = at(row, col)) return id;
+    // Nearest labelled pixel within the search radius (objects stand against walls; the GT
+    // floor plans mark furniture footprints as occupied).
+    const int rad = static_cast<int>(std::ceil(m_options.room_search_radius_m / res));
+    int best = 0, best_d2 = rad * rad + 1;
+    for (int dr = -rad; dr <= rad; ++dr)
+        for (int dc = -rad; dc <= rad; ++dc) {
+            const int d2 = dr * dr + dc * dc;
+            if (d2 >= best_d2) continue;
+            if (const int id = at(row + dr, col + dc)) best = id, best_d2 = d2;
+        }
+    return best;
+}
+
+int ObjectMapBuilder::mapClassOf(const std::string& name) {
+    const int id = m_g.classId(name);
+    if (id >= 0) return id;
+    m_g.class_names.push_back(name);
+    m_g.class_noise.resize(m_g.class_names.size());
+    return static_cast<int>(m_g.class_names.size()) - 1;
+}
+
+world::NoiseModel ObjectMapBuilder::noiseOfClass(int class_id) const {
+    if (class_id >= 0 && static_cast<std::size_t>(class_id) < m_g.class_noise.size()) {
+        const auto& n = m_g.class_noise[class_id];
+        if (n && n->isValid()) return *n;
+    }
+    world::NoiseModel fallback;  // classes without a model: isotropic Gaussian
+    fallback.cov_m2 = Eigen::Matrix2d::Identity() * m_options.default_noise_sigma_m * m_options.default_noise_sigma_m;
+    fallback.exponent_b = 2.0;
+    return fallback;
+}
+
+PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const {
+    PinholeCamera cam;
+    const mrpt::poses::CPose3D world_T_camera = robot_pose + obs.cameraPose();
+    cam.world_T_camera.linear() = world_T_camera.getRotationMatrix().asEigen();
+    cam.world_T_camera.translation() = Eigen::Vector3d(world_T_camera.x(), world_T_camera.y(), world_T_camera.z());
+    cam.width_px = static_cast<int>(obs.imageWidth());
+    cam.height_px = static_cast<int>(obs.imageHeight());
+    if (const auto& K = obs.intrinsics(); K.has_value()) {
+        cam.fx_px = K->fx(), cam.fy_px = K->fy(), cam.cx_px = K->cx(), cam.cy_px = K->cy();
+    } else {
+        cam.fx_px = m_options.default_fx_px, cam.fy_px = m_options.default_fy_px;
+        cam.cx_px = m_options.default_cx_px, cam.cy_px = m_options.default_cy_px;
+    }
+    return cam;
+}
+
+void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) {
+    ++m_stats.frames;
+    // Integration trigger: moved more than d_xy or turned more than d_theta since m^_g started.
+    if (m_window_start) {
+        const double dxy = std::hypot(robot_pose.x() - m_window_start->x(), robot_pose.y() - m_window_start->y());
+        const double dth = std::abs(mrpt::math::wrapToPi(robot_pose.yaw() - m_window_start->yaw()));
+        if (dxy > m_options.trigger_dist_m || dth > m_options.trigger_angle_rad) flush();
+    }
+    if (!m_window_start) m_window_start = robot_pose;
+
+    const int current_room =
+        m_options.room_policy == RoomUpdatePolicy::All ? 0 : roomOf(robot_pose.x(), robot_pose.y());
+
+    // I_active of the map objects for this camera, accumulated over the window.
+    const PinholeCamera camera = cameraOf(obs, robot_pose);
+    std::vector<bool> active, candidate;
+    visibility(camera, current_room, active, candidate);
+    for (std::size_t k = 0; k < m_g.objects.size(); ++k) {
+        if (active[k]) m_window_active.insert(m_g.objects[k].id);
+        if (candidate[k]) m_window_candidates.insert(m_g.objects[k].id);
+    }
+
+    // Detections: class / confidence / range filter, to the world, canonical upright, room filter.
+    std::vector<LocalObject> dets;
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+        ++m_stats.detections;
+        const obs::Detection3D& d = obs.detections()[i];
+        const std::string& name = obs.classNameOf(d);
+        const ClassFilter& f = m_options.filterOf(name);
+        if (f.max_range_m <= 0) { ++m_stats.rejected_class; continue; }
+        if (d.confidence < f.min_confidence) { ++m_stats.rejected_confidence; continue; }
+        const double range = d.box_in_camera.center.norm();
+        if (range < f.min_range_m || range > f.max_range_m) { ++m_stats.rejected_range; continue; }
+        LocalObject o;
+        o.box = geometry::canonicalizeUpright(obs.boxInWorld(i, robot_pose));
+        if (!o.box.isValid(1e-4)) { ++m_stats.rejected_invalid; continue; }
+        if (current_room != 0) {
+            const int r = roomOf(o.box.center.x(), o.box.center.y());
+            if (r != 0 && r != current_room) { ++m_stats.rejected_room; continue; }
+        }
+        o.class_id = mapClassOf(name);
+        dets.push_back(o);
+    }
+    insertIntoLocalMap(dets);
+}
+
+void ObjectMapBuilder::insertIntoLocalMap(const std::vector<LocalObject>& dets) {
+    if (dets.empty()) return;
+    const std::size_t n_local = m_local.size();
+    std::vector<int> assignment(dets.size(), -1);
+    if (n_local > 0) {
+        // Association across frames with the same cost as the map (Eq. costfunc), o1 = local object.
+        Eigen::MatrixXd cost(dets.size(), n_local);
+        for (std::size_t r = 0; r < dets.size(); ++r)
+            for (std::size_t c = 0; c < n_local; ++c)
+                cost(r, c) = dets[r].class_id != m_local[c].class_id
+                                 ? kForbiddenCost
+                                 : associationCost(m_local[c].box, noiseOfClass(m_local[c].class_id), dets[r].box);
+        assignment = geometry::solveAssignment(cost);
+        for (std::size_t r = 0; r < dets.size(); ++r)
+            if (assignment[r] >= 0 && !(cost(r, assignment[r]) < m_options.tau_cost)) assignment[r] = -1;
+    }
+    for (std::size_t r = 0; r < dets.size(); ++r) {
+        if (assignment[r] < 0) {
+            m_local.push_back(dets[r]);
+            continue;
+        }
+        LocalObject& l = m_local[assignment[r]];
+        l.box = mergeBoxes(l.box, l.n_match, dets[r].box, dets[r].n_match);
+        l.n_match += dets[r].n_match;
+    }
+}
+
+}  // namespace simp::mapping

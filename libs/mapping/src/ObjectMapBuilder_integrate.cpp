@@ -1,0 +1,125 @@
+// ObjectMapBuilder: integration of the local map m^_g into the global map m_g, and the
+// visibility (I_active) of the map objects in one camera.
+#include <simp/geometry/Hungarian.h>
+#include <simp/mapping/AssociationCost.h>
+#include <simp/mapping/ObjectMapBuilder.h>
+
+#include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace simp::mapping {
+namespace {
+constexpr double kForbiddenCost = 2.0;  ///< different classes: never associated
+}  // namespace
+
+void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
+                                  std::vector<bool>& candidate) {
+    const std::size_t n = m_g.objects.size();
+    active.assign(n, false);
+    candidate.assign(n, false);
+    if (n == 0) return;
+    m_boxes_scratch.resize(n);
+    for (std::size_t k = 0; k < n; ++k) m_boxes_scratch[k] = m_g.objects[k].box;
+    RenderParams prm;
+    prm.downscale = m_options.zbuffer_downscale;
+    prm.near_plane_m = m_options.near_plane_m;
+    prm.wall_depth_margin_m = m_options.wall_depth_margin_m;
+    prm.max_distance_m = m_options.wall_cast_max_m;
+    m_renderer.render(camera, m_boxes_scratch, &m_walls, prm, m_views_scratch);
+    for (std::size_t k = 0; k < n; ++k) {
+        const world::MapObject& o = m_g.objects[k];
+        // Room policy: only objects of the robot's current room are updated (room 0 = unknown: any).
+        if (current_room != 0 && o.room_id != 0 && o.room_id != current_room) continue;
+        const BoxView& v = m_views_scratch[k];
+        if (v.visible_px <= 0) continue;
+        candidate[k] = true;
+        const ClassFilter& f = m_options.filterOf(m_g.class_names[o.class_id]);
+        const bool in_range = f.max_range_m > 0 && v.distance_m >= f.min_range_m && v.distance_m <= f.max_range_m;
+        active[k] = in_range && v.truncated_fraction <= m_options.truncation_threshold &&
+                    v.occludedFraction() <= m_options.max_occluded_fraction;
+    }
+}
+
+void ObjectMapBuilder::flush() {
+    m_window_start.reset();
+    if (m_local.empty() && m_window_active.empty()) {
+        m_window_candidates.clear();
+        return;
+    }
+    ++m_stats.integrations;
+
+    std::unordered_map<std::int64_t, std::size_t> index_of;
+    for (std::size_t k = 0; k < m_g.objects.size(); ++k) index_of[m_g.objects[k].id] = k;
+
+    // Local objects seen often enough, and the association candidates of the map.
+    std::vector<const LocalObject*> locals;
+    for (const auto& l : m_local)
+        if (l.n_match >= m_options.min_local_detections) locals.push_back(&l);
+    std::vector<std::size_t> cands;
+    for (const std::int64_t id : m_window_candidates)
+        if (const auto it = index_of.find(id); it != index_of.end()) cands.push_back(it->second);
+
+    // Hungarian association of local objects to visible map objects (Eq. costfunc, o1 = map object).
+    std::vector<int> assignment(locals.size(), -1);
+    Eigen::MatrixXd cost(locals.size(), cands.size());
+    if (!locals.empty() && !cands.empty()) {
+        for (std::size_t r = 0; r < locals.size(); ++r)
+            for (std::size_t c = 0; c < cands.size(); ++c) {
+                const world::MapObject& o = m_g.objects[cands[c]];
+                if (o.class_id != locals[r]->class_id) {
+                    cost(r, c) = kForbiddenCost;
+                    continue;
+                }
+                const auto noise = m_g.noiseOf(o);
+                cost(r, c) = associationCost(o.box, noise && noise->isValid() ? *noise : noiseOfClass(o.class_id),
+                                             locals[r]->box);
+            }
+        assignment = geometry::solveAssignment(cost);
+    }
+
+    std::unordered_set<std::int64_t> matched;
+    std::vector<world::MapObject> added;
+    for (std::size_t r = 0; r < locals.size(); ++r) {
+        const LocalObject& l = *locals[r];
+        const int c = assignment[r];
+        if (c >= 0 && cost(r, c) < m_options.tau_cost) {
+            // Merge: weighted centre, dimensions and SVD-projected rotation; n_match summed.
+            world::MapObject& o = m_g.objects[cands[c]];
+            o.box = mergeBoxes(o.box, o.n_match, l.box, l.n_match);
+            o.n_match += l.n_match;
+            o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+            matched.insert(o.id);
+            ++m_stats.merged;
+        } else {
+            world::MapObject o;
+            o.id = m_next_id++;
+            o.class_id = l.class_id;
+            o.box = l.box;
+            o.n_match = l.n_match;
+            o.n_skip = 0;
+            o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+            added.push_back(o);
+            ++m_stats.added;
+        }
+    }
+    // n_skip for active map objects that no prediction was associated with.
+    for (const std::int64_t id : m_window_active)
+        if (!matched.count(id))
+            if (const auto it = index_of.find(id); it != index_of.end()) ++m_g.objects[it->second].n_skip;
+
+    // Purge when n_match / n_skip < tau_purge.
+    const auto purge = [&](const world::MapObject& o) {
+        return o.n_skip > 0 && static_cast<double>(o.n_match) / o.n_skip < m_options.tau_purge;
+    };
+    const std::size_t before = m_g.objects.size();
+    m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
+    m_stats.purged += before - m_g.objects.size();
+    m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
+
+    m_local.clear();
+    m_window_active.clear();
+    m_window_candidates.clear();
+}
+
+}  // namespace simp::mapping

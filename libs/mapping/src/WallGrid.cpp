@@ -1,0 +1,63 @@
+#include <simp/mapping/WallGrid.h>
+
+#include <cmath>
+#include <limits>
+
+namespace simp::mapping {
+
+WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall)
+    : m_x_min(grid.getXMin()), m_y_min(grid.getYMin()), m_res(grid.getResolution()) {
+    const int nx = static_cast<int>(grid.getSizeX()), ny = static_cast<int>(grid.getSizeY());
+    m_wall = cv::Mat1b::zeros(ny, nx);
+    for (int cy = 0; cy < ny; ++cy)
+        for (int cx = 0; cx < nx; ++cx)
+            if (grid.getCell(cx, cy) < max_free_prob_of_wall) m_wall(cy, cx) = 255;
+}
+
+bool WallGrid::isWall(double x_m, double y_m) const {
+    if (m_wall.empty()) return false;
+    const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
+    const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
+    if (cx < 0 || cy < 0 || cx >= m_wall.cols || cy >= m_wall.rows) return false;
+    return m_wall(cy, cx) != 0;
+}
+
+double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const double len = dir_in.norm();
+    if (m_wall.empty() || !(len > 0) || !origin_m.allFinite()) return kInf;
+    const Eigen::Vector2d dir = dir_in / len;
+    // Grid coordinates in cells.
+    const double gx = (origin_m.x() - m_x_min) / m_res, gy = (origin_m.y() - m_y_min) / m_res;
+    int cx = static_cast<int>(std::floor(gx)), cy = static_cast<int>(std::floor(gy));
+    const int step_x = dir.x() >= 0 ? 1 : -1, step_y = dir.y() >= 0 ? 1 : -1;
+    const double inv_dx = dir.x() != 0 ? std::abs(1.0 / dir.x()) : kInf;
+    const double inv_dy = dir.y() != 0 ? std::abs(1.0 / dir.y()) : kInf;
+    // Ray parameter (in cells) to the first vertical / horizontal cell boundary.
+    double t_max_x = dir.x() != 0 ? ((step_x > 0 ? (cx + 1 - gx) : (gx - cx)) * inv_dx) : kInf;
+    double t_max_y = dir.y() != 0 ? ((step_y > 0 ? (cy + 1 - gy) : (gy - cy)) * inv_dy) : kInf;
+    const double t_end = max_dist_m / m_res;
+    double t = 0.0;
+    while (t <= t_end) {
+        if (cx >= 0 && cy >= 0 && cx < m_wall.cols && cy < m_wall.rows) {
+            if (m_wall(cy, cx)) return t * m_res;
+        } else {
+            // Outside the grid: stop once moving away from it.
+            if ((cx < 0 && step_x < 0) || (cy < 0 && step_y < 0) || (cx >= m_wall.cols && step_x > 0) ||
+                (cy >= m_wall.rows && step_y > 0))
+                return kInf;
+        }
+        if (t_max_x < t_max_y) {
+            t = t_max_x;
+            t_max_x += inv_dx;
+            cx += step_x;
+        } else {
+            t = t_max_y;
+            t_max_y += inv_dy;
+            cy += step_y;
+        }
+    }
+    return kInf;
+}
+
+}  // namespace simp::mapping
