@@ -11,7 +11,7 @@ bool NoiseModel::isValid() const {
     const double scale = cov_m2.cwiseAbs().maxCoeff();
     if (std::abs(cov_m2(0, 1) - cov_m2(1, 0)) > 1e-12 * (1.0 + scale)) return false;
     // Positive definite (Sylvester): both leading minors > 0.
-    return cov_m2(0, 0) > 0.0 && cov_m2.determinant() > 0.0;
+    return cov_m2(0, 0) > 0.0 && cov_m2(0, 0) * cov_m2(1, 1) - cov_m2(0, 1) * cov_m2(1, 0) > 0.0;
 }
 
 }  // namespace simp::world

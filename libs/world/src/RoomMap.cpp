@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 
 namespace simp::world {
@@ -18,6 +19,30 @@ int RoomMap::roomAt(double x_m, double y_m) const {
     if (fc < 0 || fr_from_bottom < 0 || fc >= ids.cols || fr_from_bottom >= ids.rows) return 0;
     const int row = ids.rows - 1 - static_cast<int>(fr_from_bottom);
     return ids(row, static_cast<int>(fc));
+}
+
+int roomOfBox(const RoomMap& rooms, const geometry::Box3D& box) {
+    const int at_centre = rooms.roomAt(box.center.x(), box.center.y());
+    if (at_centre != 0 || rooms.empty()) return at_centre;
+    const geometry::Box3D up = geometry::canonicalizeUpright(box);
+    const double yaw = geometry::yawOf(up);
+    const Eigen::Vector2d ax(std::cos(yaw), std::sin(yaw)), ay(-ax.y(), ax.x());
+    const double step = rooms.resolution_m / 2;
+    const double hx = up.size.x() / 2 + rooms.resolution_m, hy = up.size.y() / 2 + rooms.resolution_m;
+    std::map<int, int> votes;
+    for (double a = -hx; a <= hx; a += step)
+        for (double b = -hy; b <= hy; b += step) {
+            const Eigen::Vector2d p = up.center.head<2>() + a * ax + b * ay;
+            const int id = rooms.roomAt(p.x(), p.y());
+            if (id != 0) ++votes[id];
+        }
+    int best = 0, best_votes = 0;
+    for (const auto& [id, n] : votes)
+        if (n > best_votes) {
+            best = id;
+            best_votes = n;
+        }
+    return best;
 }
 
 RoomMap loadRoomMap(const std::string& png_path, double resolution_m, double origin_x_m, double origin_y_m) {

@@ -279,7 +279,7 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         noise.cov_m2(1, 0) = noise.cov_m2(0, 1);  // exactly symmetric
         noise.exponent_b = b[i];
         o.noise = noise;
-        o.room_id = w.rooms.roomAt(fit.center_m.x(), fit.center_m.y());
+        o.room_id = roomOfBox(w.rooms, o.box);
         w.objects.objects.push_back(o);
     }
     validateObjectMap(w.objects, gv_path);

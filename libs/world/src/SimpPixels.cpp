@@ -1,5 +1,6 @@
 #include <simp/world/SimpPixels.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -45,7 +46,8 @@ RectangleFit fitRectangle(const std::array<Eigen::Vector2d, 4>& c) {
     }
     f.length_x_m = 2 * hx / 4;
     f.length_y_m = 2 * hy / 4;
-    if (!(f.length_x_m > 0) || !(f.length_y_m > 0) || !std::isfinite(f.length_x_m) || !std::isfinite(f.length_y_m))
+    const double longer = std::max(f.length_x_m, f.length_y_m);
+    if (!std::isfinite(longer) || !(std::min(f.length_x_m, f.length_y_m) > 1e-9 * longer))
         throw std::invalid_argument("fitRectangle: degenerate rectangle (a side has zero length)");
     return f;
 }

@@ -7,6 +7,7 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <opencv2/core.hpp>
+#include <simp/geometry/Box3D.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <string>
@@ -23,6 +24,11 @@ struct RoomMap {
     /// Room id at a world point (0 outside).
     int roomAt(double x_m, double y_m) const;
 };
+
+/// Room of a map object: the room at its centre; when the centre lies on no room (a board or
+/// a door in a wall), the most frequent non-zero id under its footprint grown by one cell on
+/// each side (ties: the smaller id); 0 when there is none.
+int roomOfBox(const RoomMap& rooms, const geometry::Box3D& box);
 
 struct World {
     mrpt::maps::COccupancyGridMap2D floorplan;

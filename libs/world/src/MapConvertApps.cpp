@@ -1,0 +1,99 @@
+#include <simp/world/MapConvertApps.h>
+
+#include <map>
+#include <stdexcept>
+
+namespace simp::world {
+
+namespace {
+
+/// Parses "--key value" pairs into the given targets; "--help"/"-h" sets help.
+void parseArgs(int argc, const char* const* argv, const std::map<std::string, std::string*>& opts, bool& help,
+               const std::string& usage) {
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--help" || a == "-h") {
+            help = true;
+            return;
+        }
+        const auto it = opts.find(a);
+        if (it == opts.end()) throw std::invalid_argument("unknown option '" + a + "'\n" + usage);
+        if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value\n" + usage);
+        *it->second = argv[++i];
+    }
+}
+
+}  // namespace
+
+std::string describeObjectCounts(const ObjectMapData& data) {
+    std::vector<int> counts(data.class_names.size(), 0);
+    for (const auto& o : data.objects) ++counts[static_cast<std::size_t>(o.class_id)];
+    std::string s;
+    for (std::size_t c = 0; c < counts.size(); ++c)
+        if (counts[c] > 0) s += "  " + data.class_names[c] + ": " + std::to_string(counts[c]) + "\n";
+    return s;
+}
+
+std::string ImportMapApp::usage() {
+    return "usage: simp-import-map --simp-dir D --out W [--heights INI]\n"
+           "  Reads the authors' map format in D (floor.config, global_variance.json, Map.yaml + image,\n"
+           "  roomseg.png, class_noise.csv) and writes the world directory W (floorplan.yaml/.png,\n"
+           "  rooms.png, objects.json). INI section [class_heights]: <class, '_' for ' '> = height (m).\n"
+           "  See doc/import-export.md.\n";
+}
+
+void ImportMapApp::initialize(int argc, const char* const* argv) {
+    parseArgs(argc, argv, {{"--simp-dir", &simp_dir}, {"--out", &out_dir}, {"--heights", &heights_ini}}, help_, usage());
+    if (help_) return;
+    if (simp_dir.empty()) throw std::invalid_argument("missing --simp-dir D\n" + usage());
+    if (out_dir.empty()) throw std::invalid_argument("missing --out W\n" + usage());
+}
+
+int ImportMapApp::run(std::ostream& out) {
+    if (help_) {
+        out << usage();
+        return 0;
+    }
+    SimpImportOptions opt;
+    if (!heights_ini.empty()) opt = loadSimpImportOptions(heights_ini);
+    out << "Importing the authors' map from " << simp_dir << " ...\n";
+    result = importSimpMap(simp_dir, opt);
+    saveWorld(result, out_dir);
+    const auto& g = result.floorplan;
+    out << "Floor plan: " << g.getSizeX() << " x " << g.getSizeY() << " cells at " << g.getResolution()
+        << " m, origin (" << g.getXMin() << ", " << g.getYMin() << ") m\n";
+    out << "Rooms: " << (result.rooms.empty() ? std::string("none") : std::to_string(result.objects.rooms.size()) + " named")
+        << "\n";
+    out << "Objects: " << result.objects.objects.size() << " in " << result.objects.class_names.size()
+        << " classes\n" << describeObjectCounts(result.objects);
+    out << "Wrote world directory " << out_dir << "\n";
+    return 0;
+}
+
+std::string ExportMapApp::usage() {
+    return "usage: simp-export-map --world W --out D\n"
+           "  Writes the world directory W in the authors' map format into D (floor.config,\n"
+           "  global_variance.json/.csv, Map.yaml + Map.png, roomseg.png, class_noise.csv,\n"
+           "  category_meta.json). See doc/import-export.md.\n";
+}
+
+void ExportMapApp::initialize(int argc, const char* const* argv) {
+    parseArgs(argc, argv, {{"--world", &world_dir}, {"--out", &out_dir}}, help_, usage());
+    if (help_) return;
+    if (world_dir.empty()) throw std::invalid_argument("missing --world W\n" + usage());
+    if (out_dir.empty()) throw std::invalid_argument("missing --out D\n" + usage());
+}
+
+int ExportMapApp::run(std::ostream& out) {
+    if (help_) {
+        out << usage();
+        return 0;
+    }
+    const World w = loadWorld(world_dir);
+    exportSimpMap(w, out_dir);
+    out << "Exported " << w.objects.objects.size() << " objects\n"
+        << describeObjectCounts(w.objects) << "to the authors' format in " << out_dir << "\n";
+    return 0;
+}
+
+}  // namespace simp::world
