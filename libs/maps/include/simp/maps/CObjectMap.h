@@ -1,0 +1,151 @@
+#pragma once
+/// \file CObjectMap.h
+/// The 3D object map as an MRPT metric map, with the paper's 3D-object sensor model.
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/math/TPose2D.h>
+#include <simp/maps/ConfidenceThresholds.h>
+#include <simp/maps/SensorModel.h>
+#include <simp/maps/SensorModelTypes.h>
+#include <simp/obs/CObservationObjects3D.h>
+#include <simp/world/ObjectMapData.h>
+
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+namespace simp::maps {
+
+/** A map of 3D objects (class, oriented box, noise model) in the world frame (doc/object-map.md).
+ *
+ * Likelihood of a simp::obs::CObservationObjects3D (paper Sec. "3D Semantic Localization"):
+ * per detection Eq. combined (or a baseline, TLikelihoodOptions::sensor_model), per
+ * observation the geometric mean of Eq. singw, returned as a log. Other observation types
+ * are not handled (log-likelihood 0, canComputeObservationLikelihood() false).
+ *
+ * Detections are ignored (no factor in Eq. singw) when their confidence is below their class
+ * threshold, or when the map has no object of their class (by class name).
+ *
+ * In an .ini [MetricMap] section: `semanticObjectMap_count=1`, options in
+ * `<prefix>_semanticObjectMap_00_{creationOpts,likelihoodOpts,insertOpts}`.
+ */
+class CObjectMap : public mrpt::maps::CMetricMap {
+    DEFINE_SERIALIZABLE(CObjectMap, simp::maps)
+
+   public:
+    CObjectMap();
+    CObjectMap(const CObjectMap& other);
+    CObjectMap& operator=(const CObjectMap& other);
+
+    /// @name Content
+    /// @{
+    /// Replaces the map content. With sensor_model simp or d, validates the noise models now:
+    /// throws std::invalid_argument naming the class that has none (see skip_classes_without_noise).
+    void setData(const simp::world::ObjectMapData& data);
+    const simp::world::ObjectMapData& data() const { return m_data; }
+    /// Number of objects.
+    std::size_t size() const { return m_data.objects.size(); }
+    /// @}
+
+    /** Options of the sensor model ([<prefix>_likelihoodOpts]). A public member, as in MRPT's
+     * maps: changes are picked up at the next likelihood evaluation (the precomputed rasters
+     * are rebuilt when a parameter they depend on changed). */
+    struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+        void dumpToTextStream(std::ostream& out) const override;
+
+        SensorModelType sensor_model = SensorModelType::Simp;  ///< key sensor_model = simp | edt | d | o
+        /// Eq. combined: likelihood of a false association, in (0, 1). 0.1: below exp(-1), the
+        /// smallest p_g, so p grows with p_o; one detection changes a weight by at most x10.
+        double eta = 0.1;
+        /// Per-class thresholds, key `confidence_thresholds` = "name:value, ..." (overrides the
+        /// paper's defaults class by class).
+        ConfidenceThresholds confidence_thresholds = paperConfidenceThresholds();
+        /// Threshold for classes missing from confidence_thresholds.
+        double default_confidence_threshold = 0.5;
+        double mp_resolution_m = 0.05;     ///< m_p raster cell (m)
+        double mp_min_probability = 1e-4;  ///< m_p support: p_o below this counts as 0
+        bool skip_classes_without_noise = false;  ///< true: ignore such classes instead of throwing
+        double edt_sigma_m = 0.3;          ///< EDT baseline: std. dev. of the centre distance (m)
+        double edt_max_distance_m = 2.0;   ///< EDT baseline: distance clamp (m)
+        double edt_resolution_m = 0.05;    ///< EDT baseline: raster cell (m)
+
+        /// Threshold for a class name.
+        double thresholdOf(const std::string& class_name) const;
+        /// The parameters of the precomputed model.
+        SensorModelParams modelParams() const;
+    } likelihoodOptions;
+
+    /// [<prefix>_insertOpts]: placeholder for the mapping algorithm (not wired yet).
+    struct TInsertionOptions : public mrpt::config::CLoadableOptions {
+        void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
+        void dumpToTextStream(std::ostream& out) const override;
+    } insertionOptions;
+
+    /// @name Sensor model
+    /// @{
+    /// log p(z_k | m, x) for detection k (Eq. combined or the baseline's), robot at pose
+    /// (x, y, phi) (world, m, rad); std::nullopt when the detection is ignored (under its class
+    /// threshold, class not in the map).
+    std::optional<double> detectionLogLikelihood(const simp::obs::CObservationObjects3D& obs, std::size_t k,
+                                                 const mrpt::math::TPose2D& robot_pose) const;
+
+    /// Fast batch path for N particle poses: adds log p of every used detection to sum_log[i]
+    /// and the number of used detections to `used` (same for all particles).
+    void accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs, const mrpt::math::TPose2D* poses,
+                                  std::size_t n, double* sum_log, std::size_t& used) const;
+
+    /// The precomputed model for the current data and likelihoodOptions (built on demand).
+    std::shared_ptr<const SensorModel> sensorModel() const;
+    /// @}
+
+    /// @name mrpt::maps::CMetricMap
+    /// @{
+    bool isEmpty() const override { return m_data.objects.empty(); }
+    /// Writes <prefix>_objects.json (the object map file) and <prefix>_summary.txt.
+    void saveMetricMapRepresentationToFile(const std::string& filNamePrefix) const override;
+    /// One wireframe mrpt::opengl::CBox per object, coloured by class, with a class label.
+    void getVisualizationInto(mrpt::opengl::CSetOfObjects& outObj) const override;
+    std::string asString() const override;
+    /// @}
+
+    /// RGB colour (0..255) of a class id in the fixed palette used by getVisualizationInto().
+    static std::array<std::uint8_t, 3> classColor(int class_id);
+
+    MAP_DEFINITION_START(CObjectMap)
+    std::string map_file;     ///< [_creationOpts] map_file: object map (JSON) to load; empty = empty map
+    std::string class_names;  ///< [_creationOpts] class_names: optional comma-separated class list
+    simp::maps::CObjectMap::TLikelihoodOptions likelihoodOpts;
+    simp::maps::CObjectMap::TInsertionOptions insertionOpts;
+    MAP_DEFINITION_END(CObjectMap)
+
+   private:
+    void internal_clear() override;
+    bool internal_insertObservation(const mrpt::obs::CObservation& obs,
+                                    const std::optional<const mrpt::poses::CPose3D>& robotPose) override;
+    double internal_computeObservationLikelihood(const mrpt::obs::CObservation& obs,
+                                                 const mrpt::poses::CPose3D& takenFrom) const override;
+    bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const override;
+
+    /// Detections of `obs` that take part, prepared in the robot frame; returns how many were
+    /// written to `out` (capacity `cap`), starting at detection `first` (advanced past the last read).
+    std::size_t prepareDetections(const SensorModel& model, const simp::obs::CObservationObjects3D& obs,
+                                  std::size_t& first, PreparedDetection* out, std::size_t cap) const;
+    /// Map class id of detection k, or -1 when ignored (threshold, class not in the map).
+    int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
+    void warnEmptyOnce() const;
+
+    simp::world::ObjectMapData m_data;
+    mutable std::mutex m_cache_mutex;
+    mutable std::shared_ptr<const SensorModel> m_model;  ///< built for m_data and m_model->params()
+    mutable bool m_warned_empty = false;
+};
+
+/// Applies a class list to a map: objects of other classes are dropped, class ids and class
+/// noise follow the names. Used by the `class_names` creation option.
+simp::world::ObjectMapData restrictToClasses(const simp::world::ObjectMapData& data,
+                                             const std::vector<std::string>& class_names);
+
+}  // namespace simp::maps

@@ -1,0 +1,42 @@
+#pragma once
+/// \file SensorModelTypes.h
+/// Which 3D-object sensor model to use and its parameters.
+
+#include <simp/maps/ObjectProbabilityMap.h>
+
+#include <string>
+
+namespace simp::maps {
+
+/// The paper's model and its three baselines (Sec. "Baseline Comparisons").
+enum class SensorModelType {
+    Simp,  ///< Eqs. globaldist + iouscore + combined (ours)
+    Edt,   ///< EDT-MCL: per-class distance transform, beam-end model of the detection centre
+    D,     ///< D-MCL: p_o of Eq. globaldist only (centre, no shape)
+    O      ///< O-MCL: footprint overlap of Eq. iouscore only (no noise model)
+};
+
+/// "simp" | "edt" | "d" | "o" (case-insensitive); throws std::invalid_argument listing the valid names.
+SensorModelType parseSensorModelType(const std::string& name);
+/// Lower-case name, as parsed.
+std::string toString(SensorModelType type);
+
+/// Everything the precomputation and the per-pair evaluation depend on.
+struct SensorModelParams {
+    SensorModelType type = SensorModelType::Simp;
+    double eta = 0.1;                   ///< Eq. combined: likelihood of a false association, in (0, 1)
+    ObjectProbabilityMap::Options mp;   ///< m_p raster (simp, d)
+    double edt_sigma_m = 0.3;           ///< EDT: std. dev. of the centre distance (m)
+    double edt_max_distance_m = 2.0;    ///< EDT: distances are clamped to this (m)
+    double edt_resolution_m = 0.05;     ///< EDT raster cell (m)
+
+    bool operator==(const SensorModelParams& o) const {
+        return type == o.type && eta == o.eta && mp.resolution_m == o.mp.resolution_m &&
+               mp.min_probability == o.mp.min_probability &&
+               mp.skip_classes_without_noise == o.mp.skip_classes_without_noise && edt_sigma_m == o.edt_sigma_m &&
+               edt_max_distance_m == o.edt_max_distance_m && edt_resolution_m == o.edt_resolution_m;
+    }
+    bool operator!=(const SensorModelParams& o) const { return !(*this == o); }
+};
+
+}  // namespace simp::maps

@@ -1,0 +1,157 @@
+#include <simp/maps/CObjectMap.h>
+#include <simp/obs/ObjectClasses.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+
+// "semanticObjectMap" is the short name used in .ini files: semanticObjectMap_count=1.
+MAP_DEFINITION_REGISTER("simp::maps::CObjectMap,semanticObjectMap", simp::maps::CObjectMap)
+
+namespace simp::maps {
+namespace {
+
+std::vector<std::string> splitClassList(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        const auto b = item.find_first_not_of(" \t\"");
+        if (b == std::string::npos) continue;
+        const auto e = item.find_last_not_of(" \t\"");
+        out.push_back(item.substr(b, e - b + 1));
+    }
+    return out;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------- map definition (.ini)
+CObjectMap::TMapDefinition::TMapDefinition() = default;
+
+void CObjectMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::config::CConfigFileBase& source,
+                                                                 const std::string& sectionNamePrefix) {
+    const std::string creation = sectionNamePrefix + "_creationOpts";
+    MRPT_LOAD_CONFIG_VAR(map_file, string, source, creation);
+    MRPT_LOAD_CONFIG_VAR(class_names, string, source, creation);
+    likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
+    insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
+}
+
+void CObjectMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
+    out << "map_file                                = " << (map_file.empty() ? "(none: empty map)" : map_file) << "\n";
+    out << "class_names                             = " << (class_names.empty() ? "(from the map file)" : class_names)
+        << "\n";
+    likelihoodOpts.dumpToTextStream(out);
+    insertionOpts.dumpToTextStream(out);
+}
+
+mrpt::maps::CMetricMap* CObjectMap::internal_CreateFromMapDefinition(const mrpt::maps::TMetricMapInitializer& _def) {
+    const auto& def = dynamic_cast<const CObjectMap::TMapDefinition&>(_def);
+    auto obj = std::make_unique<CObjectMap>();
+    obj->likelihoodOptions = def.likelihoodOpts;
+    obj->insertionOptions = def.insertionOpts;
+    const auto classes = splitClassList(def.class_names);
+    simp::world::ObjectMapData data;
+    if (!def.map_file.empty()) {
+        if (!std::filesystem::exists(def.map_file))
+            throw std::invalid_argument("semanticObjectMap [_creationOpts] map_file: '" + def.map_file +
+                                        "' does not exist");
+        data = simp::world::loadObjectMap(def.map_file);
+        if (!classes.empty()) data = restrictToClasses(data, classes);
+    } else {
+        data.class_names = classes.empty() ? simp::obs::defaultClassNames() : classes;
+        data.class_noise.assign(data.class_names.size(), std::nullopt);
+    }
+    obj->setData(data);
+    return obj.release();
+}
+
+// ---------------------------------------------------------------- content
+CObjectMap::CObjectMap() {
+    m_data.class_names = simp::obs::defaultClassNames();
+    m_data.class_noise.assign(m_data.class_names.size(), std::nullopt);
+}
+
+CObjectMap::CObjectMap(const CObjectMap& other)
+    : mrpt::maps::CMetricMap(other),
+      likelihoodOptions(other.likelihoodOptions),
+      insertionOptions(other.insertionOptions),
+      m_data(other.m_data) {
+    std::lock_guard<std::mutex> lock(other.m_cache_mutex);
+    m_model = other.m_model;  // immutable, shared
+}
+
+CObjectMap& CObjectMap::operator=(const CObjectMap& other) {
+    if (this == &other) return *this;
+    mrpt::maps::CMetricMap::operator=(other);
+    likelihoodOptions = other.likelihoodOptions;
+    insertionOptions = other.insertionOptions;
+    m_data = other.m_data;
+    std::shared_ptr<const SensorModel> model;
+    {
+        std::lock_guard<std::mutex> lock(other.m_cache_mutex);
+        model = other.m_model;
+    }
+    std::lock_guard<std::mutex> lock(m_cache_mutex);
+    m_model = model;
+    m_warned_empty = false;
+    return *this;
+}
+
+void CObjectMap::setData(const simp::world::ObjectMapData& data) {
+    // Build (and so validate) the model before touching the current content.
+    const auto params = likelihoodOptions.modelParams();
+    auto model = std::make_shared<const SensorModel>(data, params);
+    std::lock_guard<std::mutex> lock(m_cache_mutex);
+    m_data = data;
+    m_model = std::move(model);
+    m_warned_empty = false;
+}
+
+void CObjectMap::internal_clear() {
+    const auto classes = m_data.class_names;
+    const auto noise = m_data.class_noise;
+    simp::world::ObjectMapData empty;
+    empty.class_names = classes;
+    empty.class_noise = noise;
+    setData(empty);
+}
+
+bool CObjectMap::internal_insertObservation(const mrpt::obs::CObservation& /*obs*/,
+                                            const std::optional<const mrpt::poses::CPose3D>& /*robotPose*/) {
+    // Map construction (paper Sec. "3D Semantic Map Construction") lives in libs/mapping
+    // (simp::mapping::ObjectMapBuilder); it is not wired into this map yet, so inserting an
+    // observation changes nothing.
+    return false;
+}
+
+std::string CObjectMap::asString() const {
+    return "simp::maps::CObjectMap: " + std::to_string(m_data.objects.size()) + " objects, " +
+           std::to_string(m_data.class_names.size()) + " classes, sensor model " +
+           toString(likelihoodOptions.sensor_model);
+}
+
+simp::world::ObjectMapData restrictToClasses(const simp::world::ObjectMapData& data,
+                                             const std::vector<std::string>& class_names) {
+    simp::world::ObjectMapData out;
+    out.class_names = class_names;
+    out.class_noise.assign(class_names.size(), std::nullopt);
+    for (std::size_t c = 0; c < class_names.size(); ++c) {
+        const int old_id = data.classId(class_names[c]);
+        if (old_id >= 0 && static_cast<std::size_t>(old_id) < data.class_noise.size())
+            out.class_noise[c] = data.class_noise[static_cast<std::size_t>(old_id)];
+    }
+    for (const auto& obj : data.objects) {
+        if (obj.class_id < 0 || static_cast<std::size_t>(obj.class_id) >= data.class_names.size()) continue;
+        const auto it = std::find(class_names.begin(), class_names.end(),
+                                  data.class_names[static_cast<std::size_t>(obj.class_id)]);
+        if (it == class_names.end()) continue;
+        auto copy = obj;
+        copy.class_id = static_cast<int>(it - class_names.begin());
+        out.objects.push_back(copy);
+    }
+    return out;
+}
+
+}  // namespace simp::maps

@@ -1,0 +1,101 @@
+#include <mrpt/core/exceptions.h>
+#include <simp/maps/CObjectMap.h>
+
+#include <array>
+#include <cmath>
+#include <iostream>
+
+namespace simp::maps {
+namespace {
+
+/// Detections processed per batch on the stack (no heap allocation in the batch path).
+constexpr std::size_t kBatch = 32;
+
+mrpt::math::TPose2D toPose2D(const mrpt::poses::CPose3D& p) { return {p.x(), p.y(), p.yaw()}; }
+
+}  // namespace
+
+std::shared_ptr<const SensorModel> CObjectMap::sensorModel() const {
+    const auto params = likelihoodOptions.modelParams();
+    std::lock_guard<std::mutex> lock(m_cache_mutex);
+    if (!m_model || m_model->params() != params) m_model = std::make_shared<const SensorModel>(m_data, params);
+    return m_model;
+}
+
+void CObjectMap::warnEmptyOnce() const {
+    std::lock_guard<std::mutex> lock(m_cache_mutex);
+    if (m_warned_empty) return;
+    m_warned_empty = true;
+    std::cerr << "[simp::maps::CObjectMap] warning: the object map has no object usable by sensor model '"
+              << toString(likelihoodOptions.sensor_model)
+              << "': every detection is ignored and every pose gets the same (neutral) likelihood\n";
+}
+
+int CObjectMap::usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const {
+    const auto& det = obs.detections().at(k);
+    const std::string& name = obs.classNameOf(det);
+    // Compared in the detector's single precision, so "0.7" in the .ini admits a 0.7f score.
+    if (det.confidence < static_cast<float>(likelihoodOptions.thresholdOf(name))) return -1;  // under threshold
+    return m_data.classId(name);                                          // -1: class not in the map
+}
+
+std::size_t CObjectMap::prepareDetections(const SensorModel& model, const simp::obs::CObservationObjects3D& obs,
+                                          std::size_t& first, PreparedDetection* out, std::size_t cap) const {
+    std::size_t count = 0;
+    for (; first < obs.size() && count < cap; ++first) {
+        const int cls = usableClassOf(obs, first);
+        if (cls < 0) continue;
+        auto prepared = model.prepare(cls, obs.boxInRobot(first), obs.footprintInRobot(first));
+        if (prepared) out[count++] = *prepared;
+    }
+    return count;
+}
+
+std::optional<double> CObjectMap::detectionLogLikelihood(const simp::obs::CObservationObjects3D& obs, std::size_t k,
+                                                         const mrpt::math::TPose2D& robot_pose) const {
+    const auto model = sensorModel();
+    if (model->empty()) warnEmptyOnce();
+    const int cls = usableClassOf(obs, k);
+    if (cls < 0) return std::nullopt;
+    const auto prepared = model->prepare(cls, obs.boxInRobot(k), obs.footprintInRobot(k));
+    if (!prepared) return std::nullopt;
+    const double log_p = model->logLikelihood(*prepared, robot_pose);
+    MRPT_CHECK_NORMAL_NUMBER(log_p);
+    return log_p;
+}
+
+void CObjectMap::accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs,
+                                          const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log,
+                                          std::size_t& used) const {
+    const auto model = sensorModel();
+    if (model->empty()) warnEmptyOnce();
+    std::array<PreparedDetection, kBatch> batch;
+    std::size_t next = 0;
+    while (next < obs.size()) {
+        const std::size_t count = prepareDetections(*model, obs, next, batch.data(), batch.size());
+        if (count == 0) continue;
+        model->accumulateLogLikelihoods(batch.data(), count, poses, n, sum_log);
+        used += count;
+    }
+}
+
+double CObjectMap::internal_computeObservationLikelihood(const mrpt::obs::CObservation& obs,
+                                                         const mrpt::poses::CPose3D& takenFrom) const {
+    const auto* objects = dynamic_cast<const simp::obs::CObservationObjects3D*>(&obs);
+    if (!objects) return 0.0;  // not ours: neutral
+    const auto pose = toPose2D(takenFrom);
+    double sum_log = 0.0;
+    std::size_t used = 0;
+    accumulateLogLikelihoods(*objects, &pose, 1, &sum_log, used);
+    if (used == 0) return 0.0;
+    // Eq. singw: geometric mean of the K per-detection likelihoods -> mean of their logs.
+    const double log_p = sum_log / static_cast<double>(used);
+    MRPT_CHECK_NORMAL_NUMBER(log_p);
+    return log_p;
+}
+
+bool CObjectMap::internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const {
+    return dynamic_cast<const simp::obs::CObservationObjects3D*>(&obs) != nullptr;
+}
+
+}  // namespace simp::maps

@@ -1,0 +1,88 @@
+#include <mrpt/config/CConfigFileBase.h>
+#include <simp/maps/CObjectMap.h>
+
+#include <iomanip>
+#include <stdexcept>
+
+namespace simp::maps {
+
+void CObjectMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+                                                        const std::string& section) {
+    const std::string model_name = source.read_string(section, "sensor_model", toString(sensor_model));
+    try {
+        sensor_model = parseSensorModelType(model_name);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("[" + section + "] sensor_model: " + e.what());
+    }
+    MRPT_LOAD_CONFIG_VAR(eta, double, source, section);
+    if (!(eta > 0.0 && eta < 1.0))
+        throw std::invalid_argument("[" + section + "] eta = " + std::to_string(eta) + " must be in (0, 1)");
+
+    const std::string thresholds_text = source.read_string(section, "confidence_thresholds", "");
+    for (const auto& [name, value] :
+         parseConfidenceThresholds(thresholds_text, "[" + section + "] confidence_thresholds"))
+        confidence_thresholds[name] = value;  // override the defaults class by class
+    MRPT_LOAD_CONFIG_VAR(default_confidence_threshold, double, source, section);
+    if (!(default_confidence_threshold >= 0.0 && default_confidence_threshold <= 1.0))
+        throw std::invalid_argument("[" + section + "] default_confidence_threshold must be in [0, 1]");
+
+    MRPT_LOAD_CONFIG_VAR(mp_resolution_m, double, source, section);
+    MRPT_LOAD_CONFIG_VAR(mp_min_probability, double, source, section);
+    MRPT_LOAD_CONFIG_VAR(skip_classes_without_noise, bool, source, section);
+    MRPT_LOAD_CONFIG_VAR(edt_sigma_m, double, source, section);
+    MRPT_LOAD_CONFIG_VAR(edt_max_distance_m, double, source, section);
+    MRPT_LOAD_CONFIG_VAR(edt_resolution_m, double, source, section);
+    const auto positive = [&](double v, const char* key) {
+        if (!(v > 0.0)) throw std::invalid_argument("[" + section + "] " + key + " = " + std::to_string(v) + " must be > 0");
+    };
+    positive(mp_resolution_m, "mp_resolution_m");
+    positive(edt_sigma_m, "edt_sigma_m");
+    positive(edt_max_distance_m, "edt_max_distance_m");
+    positive(edt_resolution_m, "edt_resolution_m");
+    if (!(mp_min_probability > 0.0 && mp_min_probability < 1.0))
+        throw std::invalid_argument("[" + section + "] mp_min_probability must be in (0, 1)");
+}
+
+void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
+    out << "\n----------- [simp::maps::CObjectMap::TLikelihoodOptions] ------------\n\n";
+    out << "sensor_model                            = " << toString(sensor_model) << "\n";
+    LOADABLEOPTS_DUMP_VAR(eta, double);
+    out << "confidence_thresholds                   = " << formatConfidenceThresholds(confidence_thresholds) << "\n";
+    LOADABLEOPTS_DUMP_VAR(default_confidence_threshold, double);
+    LOADABLEOPTS_DUMP_VAR(mp_resolution_m, double);
+    LOADABLEOPTS_DUMP_VAR(mp_min_probability, double);
+    LOADABLEOPTS_DUMP_VAR(skip_classes_without_noise, bool);
+    LOADABLEOPTS_DUMP_VAR(edt_sigma_m, double);
+    LOADABLEOPTS_DUMP_VAR(edt_max_distance_m, double);
+    LOADABLEOPTS_DUMP_VAR(edt_resolution_m, double);
+}
+
+double CObjectMap::TLikelihoodOptions::thresholdOf(const std::string& class_name) const {
+    const auto it = confidence_thresholds.find(class_name);
+    return it == confidence_thresholds.end() ? default_confidence_threshold : it->second;
+}
+
+SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
+    SensorModelParams p;
+    p.type = sensor_model;
+    p.eta = eta;
+    p.mp.resolution_m = mp_resolution_m;
+    p.mp.min_probability = mp_min_probability;
+    p.mp.skip_classes_without_noise = skip_classes_without_noise;
+    p.edt_sigma_m = edt_sigma_m;
+    p.edt_max_distance_m = edt_max_distance_m;
+    p.edt_resolution_m = edt_resolution_m;
+    return p;
+}
+
+void CObjectMap::TInsertionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& /*source*/,
+                                                       const std::string& /*section*/) {
+    // No insertion options yet: map construction is not wired into CObjectMap.
+}
+
+void CObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const {
+    out << "\n----------- [simp::maps::CObjectMap::TInsertionOptions] ------------\n\n";
+    out << "(none: observation insertion is not wired to the mapping algorithm yet)\n";
+}
+
+}  // namespace simp::maps

@@ -1,0 +1,144 @@
+#include <simp/maps/SensorModel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace simp::maps {
+namespace {
+
+bool needsProbabilityMap(SensorModelType t) { return t == SensorModelType::Simp || t == SensorModelType::D; }
+
+void checkParams(const SensorModelParams& p) {
+    if (!(p.eta > 0.0 && p.eta < 1.0)) throw std::invalid_argument("eta = " + std::to_string(p.eta) + " must be in (0, 1)");
+    if (!(p.mp.resolution_m > 0.0)) throw std::invalid_argument("mp_resolution_m must be > 0");
+    if (!(p.mp.min_probability > 0.0 && p.mp.min_probability < 1.0))
+        throw std::invalid_argument("mp_min_probability must be in (0, 1)");
+    if (!(p.edt_sigma_m > 0.0)) throw std::invalid_argument("edt_sigma_m must be > 0");
+    if (!(p.edt_max_distance_m > 0.0)) throw std::invalid_argument("edt_max_distance_m must be > 0");
+    if (!(p.edt_resolution_m > 0.0)) throw std::invalid_argument("edt_resolution_m must be > 0");
+}
+
+}  // namespace
+
+SensorModel::SensorModel(const world::ObjectMapData& data, const SensorModelParams& params)
+    : m_params(params), m_footprints(computeMapFootprints(data)) {
+    checkParams(params);
+    m_log_eta = std::log(params.eta);
+    m_exp_minus_1 = std::exp(-1.0);
+    m_inv_two_sigma2 = 1.0 / (2.0 * params.edt_sigma_m * params.edt_sigma_m);
+    if (needsProbabilityMap(params.type)) {
+        m_mp = ObjectProbabilityMap(data, params.mp);
+        for (std::size_t c = 0; c < m_mp.numClasses(); ++c) m_num_usable_objects += m_mp.objectsOf(static_cast<int>(c)).size();
+    } else {
+        m_num_usable_objects = data.objects.size();
+    }
+    if (params.type == SensorModelType::Edt)
+        m_edt = EdtMap(m_footprints, params.edt_resolution_m, params.edt_max_distance_m);
+}
+
+std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geometry::Box3D& box_in_robot,
+                                                      const geometry::ConvexPolygon& footprint_in_robot) const {
+    if (map_class < 0 || static_cast<std::size_t>(map_class) >= m_footprints.class_objects.size()) return std::nullopt;
+    const bool usable = needsProbabilityMap(m_params.type)
+                            ? m_mp.hasClass(map_class)
+                            : !m_footprints.class_objects[static_cast<std::size_t>(map_class)].empty();
+    if (!usable) return std::nullopt;
+    PreparedDetection d;
+    d.map_class = map_class;
+    d.center_robot_m = box_in_robot.center.head<2>();
+    d.footprint_robot = footprint_in_robot;
+    d.area_m2 = footprint_in_robot.area();
+    for (std::size_t v = 0; v < footprint_in_robot.n; ++v)
+        d.radius_m = std::max(d.radius_m, (footprint_in_robot.v[v] - d.center_robot_m).norm());
+    return d;
+}
+
+// ----------------------------------------------------------------------------------------------
+// Per (pose, detection) kernels. The robot pose is (c, s) = (cos phi, sin phi) and t = (tx, ty).
+template <SensorModelType T>
+double SensorModel::kernel(const PreparedDetection& det, double c, double s, double tx, double ty) const {
+    // Detection centre in the world for this pose.
+    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
+    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
+    const double eta = m_params.eta;
+
+    if constexpr (T == SensorModelType::Simp || T == SensorModelType::D) {
+        // Eq. globaldist: p_o = max over the class's objects of p_o(c), o_max its argmax (raster).
+        const auto hit = m_mp.lookup(det.map_class, wx, wy);
+        if (hit.object < 0) return m_log_eta;  // p_o = 0: Eq. combined gives eta
+        if constexpr (T == SensorModelType::D) {
+            return std::log(hit.p + (1.0 - hit.p) * eta);  // Eq. combined with p_g = 1
+        } else {
+            // Eq. iouscore: p_g = exp(-(1 - IoU)) between the detection footprint and o_max's.
+            const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(hit.object)];
+            double p_g = m_exp_minus_1;  // IoU = 0
+            const Eigen::Vector2d wc(wx, wy);
+            if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
+                const auto fp = det.footprint_robot.transformed(c, s, Eigen::Vector2d(tx, ty));
+                p_g = std::exp(iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2) - 1.0);
+            }
+            return std::log(hit.p * p_g + (1.0 - hit.p) * eta);  // Eq. combined
+        }
+    } else if constexpr (T == SensorModelType::O) {
+        // Best overlap with any object of the class; IoU plays the association probability.
+        const Eigen::Vector2d wc(wx, wy);
+        double best_iou = 0.0;
+        bool transformed = false;
+        geometry::ConvexPolygon fp;
+        for (const std::int32_t o : m_footprints.class_objects[static_cast<std::size_t>(det.map_class)]) {
+            const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(o)];
+            if (!circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) continue;
+            if (!transformed) {
+                fp = det.footprint_robot.transformed(c, s, Eigen::Vector2d(tx, ty));
+                transformed = true;
+            }
+            best_iou = std::max(best_iou, iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2));
+        }
+        if (best_iou <= 0.0) return m_log_eta;
+        const double p_g = std::exp(best_iou - 1.0);  // Eq. iouscore
+        return std::log(best_iou * p_g + (1.0 - best_iou) * eta);
+    } else {
+        // EDT-MCL: beam-end model of the centre, mixed with the same floor eta.
+        const double d = m_edt.distance(det.map_class, wx, wy);
+        const double p_hit = std::exp(-d * d * m_inv_two_sigma2);
+        return std::log(p_hit + (1.0 - p_hit) * eta);
+    }
+}
+
+template <SensorModelType T>
+void SensorModel::accumulate(const PreparedDetection* dets, std::size_t num_dets, const mrpt::math::TPose2D* poses,
+                             std::size_t n, double* sum_log) const {
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& p = poses[i];
+        const double c = std::cos(p.phi), s = std::sin(p.phi);
+        double acc = 0.0;
+        for (std::size_t k = 0; k < num_dets; ++k) acc += kernel<T>(dets[k], c, s, p.x, p.y);
+        sum_log[i] += acc;
+    }
+}
+
+double SensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
+    const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+    switch (m_params.type) {
+        case SensorModelType::Simp: return kernel<SensorModelType::Simp>(det, c, s, pose.x, pose.y);
+        case SensorModelType::Edt: return kernel<SensorModelType::Edt>(det, c, s, pose.x, pose.y);
+        case SensorModelType::D: return kernel<SensorModelType::D>(det, c, s, pose.x, pose.y);
+        case SensorModelType::O: return kernel<SensorModelType::O>(det, c, s, pose.x, pose.y);
+    }
+    return 0.0;
+}
+
+void SensorModel::accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
+                                           const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const {
+    if (num_dets == 0 || n == 0) return;
+    switch (m_params.type) {
+        case SensorModelType::Simp: accumulate<SensorModelType::Simp>(dets, num_dets, poses, n, sum_log); break;
+        case SensorModelType::Edt: accumulate<SensorModelType::Edt>(dets, num_dets, poses, n, sum_log); break;
+        case SensorModelType::D: accumulate<SensorModelType::D>(dets, num_dets, poses, n, sum_log); break;
+        case SensorModelType::O: accumulate<SensorModelType::O>(dets, num_dets, poses, n, sum_log); break;
+    }
+}
+
+}  // namespace simp::maps

@@ -1,0 +1,160 @@
+// m_p (Eqs. shiftdist, globaldist): the raster lookup against brute force over all objects.
+#include <gtest/gtest.h>
+#include <simp/maps/ObjectProbabilityMap.h>
+
+#include "TestMaps.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace simp::maps {
+namespace {
+
+TEST(ObjectDistribution, ShiftdistMovesAndRotatesTheClassNoise) {
+    // Object at (2, 1) rotated by 90 deg; class noise mean (0.1, 0) m, sigma (0.3, 0.1) m in the object frame.
+    const auto box = geometry::makeUprightBox({2.0, 1.0, 0.5}, {1.0, 0.5, 1.0}, M_PI / 2);
+    const auto d = makeObjectDistribution(box, test::noise(0.3, 0.1, 2.0, 0.1, 0.0));
+    EXPECT_NEAR(d.mean_world_m.x(), 2.0, 1e-12);  // mu_o = R_o mu + c_o
+    EXPECT_NEAR(d.mean_world_m.y(), 1.1, 1e-12);
+    EXPECT_NEAR(d.sigma_x_m, 0.1, 1e-12);  // Sigma_o = R_o Sigma R_o^T swaps the axes
+    EXPECT_NEAR(d.sigma_y_m, 0.3, 1e-12);
+    EXPECT_DOUBLE_EQ(d.probability(2.0, 1.1), 1.0);  // unnormalized: peak exactly 1
+    // One sigma along world y (the object's x): m = 1, p = exp(-0.5).
+    EXPECT_NEAR(d.probability(2.0, 1.4), std::exp(-0.5), 1e-12);
+    // b = 4: p = exp(-0.5 m^4); m = 2 along world x (sigma 0.1).
+    const auto d4 = makeObjectDistribution(box, test::noise(0.3, 0.1, 4.0, 0.1, 0.0));
+    EXPECT_NEAR(d4.probability(2.2, 1.1), std::exp(-0.5 * 16.0), 1e-15);
+}
+
+TEST(ObjectDistribution, RejectsInvalidNoise) {
+    const auto box = geometry::makeUprightBox({0, 0, 0.5}, {1, 1, 1}, 0);
+    EXPECT_THROW(makeObjectDistribution(box, test::noise(0.3, 0.1, 0.0)), std::invalid_argument);
+    auto bad = test::noise(0.3, 0.1, 2.0);
+    bad.cov_m2(1, 1) = -1.0;
+    EXPECT_THROW(makeObjectDistribution(box, bad), std::invalid_argument);
+}
+
+TEST(ObjectDistribution, SupportRadiusAndSlope) {
+    EXPECT_NEAR(std::exp(-0.5 * std::pow(supportMahalanobisRadius(2.0, 1e-4), 2.0)), 1e-4, 1e-12);
+    EXPECT_NEAR(std::exp(-0.5 * std::pow(supportMahalanobisRadius(4.0, 1e-4), 4.0)), 1e-4, 1e-12);
+    // Gaussian: max |d/dm exp(-m^2/2)| = exp(-1/2) at m = 1.
+    EXPECT_NEAR(maxSlopeMahalanobis(2.0), std::exp(-0.5), 1e-12);
+    // Numeric check for b = 4.
+    double best = 0;
+    for (double m = 0; m < 3; m += 1e-4) best = std::max(best, 2.0 * std::pow(m, 3) * std::exp(-0.5 * std::pow(m, 4)));
+    EXPECT_NEAR(maxSlopeMahalanobis(4.0), best, 1e-6);
+}
+
+/// A cluttered map: 60 objects of two classes, random poses, noise with b in {2, 4}, some
+/// objects with their own noise (overriding the class's), close enough to compete.
+world::ObjectMapData randomMap(unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> ux(0.0, 8.0), uy(0.0, 6.0), uyaw(-M_PI, M_PI), usig(0.15, 0.4),
+        umean(-0.1, 0.1), usize(0.3, 1.5);
+    world::ObjectMapData m;
+    m.class_names = {"chair", "table"};
+    m.class_noise = {test::noise(0.2, 0.1, 2.0, 0.05, 0.0), test::noise(0.3, 0.2, 4.0)};
+    for (int i = 0; i < 60; ++i) {
+        world::MapObject o;
+        o.id = i;
+        o.class_id = i % 2;
+        o.box = geometry::makeUprightBox({ux(rng), uy(rng), 0.5}, {usize(rng), usize(rng), 1.0}, uyaw(rng));
+        if (i % 3 == 0) o.noise = test::noise(usig(rng), usig(rng), (i % 2) ? 2.0 : 4.0, umean(rng), umean(rng));
+        m.objects.push_back(o);
+    }
+    return m;
+}
+
+TEST(ObjectProbabilityMap, LookupMatchesBruteForceWithinTheRasterBound) {
+    const auto data = randomMap(7);
+    ObjectProbabilityMap::Options opt;
+    opt.resolution_m = 0.05;
+    opt.min_probability = 1e-4;
+    const ObjectProbabilityMap mp(data, opt);
+
+    for (int cls = 0; cls < 2; ++cls) {
+        // Bound (see doc/object-map.md): with h = res / sqrt(2) the distance from a point to its
+        // cell centre and L = max_o slope_o / sigma_min_o the largest gradient of any p_o,
+        //   max_o p_o(c) - p_{o_max}(c) <= 2 L h    (argmax taken at the cell centre),
+        //   and a point of an empty cell has max_o p_o(c) < p_min + L h.
+        double L = 0;
+        for (const auto o : mp.objectsOf(cls)) {
+            const auto& d = mp.distribution(static_cast<std::size_t>(o));
+            L = std::max(L, maxSlopeMahalanobis(2.0 * d.half_b) / d.sigma_min_m);
+        }
+        const double h = opt.resolution_m / std::sqrt(2.0);
+        const double bound_hit = 2.0 * L * h + 1e-6;  // + float storage of the cell maxima
+        const double bound_empty = opt.min_probability + L * h;
+
+        std::mt19937 rng(11 + cls);
+        std::uniform_real_distribution<double> ux(-1.0, 9.0), uy(-1.0, 7.0);
+        int same = 0, differ = 0, differ_supported = 0, nonzero = 0;
+        double worst = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const double x = ux(rng), y = uy(rng);
+            const auto fast = mp.lookup(cls, x, y);
+            const auto slow = mp.bruteForce(cls, x, y);
+            if (slow.p > 1e-3) ++nonzero;
+            if (fast.object == slow.object) {
+                ++same;
+                EXPECT_EQ(fast.p, slow.p);  // same object: the very same formula
+                continue;
+            }
+            ++differ;
+            if (slow.p >= opt.min_probability) ++differ_supported;
+            const double err = slow.p - fast.p;
+            worst = std::max(worst, err);
+            ASSERT_GE(err, 0.0);
+            if (fast.object < 0)
+                ASSERT_LT(slow.p, bound_empty) << "at (" << x << ", " << y << ")";
+            else
+                ASSERT_LE(err, bound_hit) << "at (" << x << ", " << y << ")";
+        }
+        // Where some p_o >= p_min the raster agrees with brute force on the argmax almost
+        // everywhere: disagreements are confined to cells crossed by an argmax boundary or by
+        // the support edge (a band one cell wide).
+        EXPECT_GT(nonzero, 2000) << "the test points must cover the objects";
+        EXPECT_LT(differ_supported, nonzero / 20) << "more than 5% argmax disagreements";
+        std::cout << "class " << cls << ": " << same << " equal, " << differ << " differ (" << differ_supported
+                  << " with p >= p_min, of " << nonzero << " with p > 1e-3), worst p error " << worst << " (bound "
+                  << bound_hit << ")\n";
+    }
+}
+
+TEST(ObjectProbabilityMap, OutsideTheRasterIsZero) {
+    const auto data = test::smallMap();
+    const ObjectProbabilityMap mp(data, {});
+    const int chair = data.classId("chair");
+    const auto far = mp.lookup(chair, 1000.0, -1000.0);
+    EXPECT_EQ(far.object, -1);
+    EXPECT_EQ(far.p, 0.0);
+    const auto nan = mp.lookup(chair, std::nan(""), 0.0);
+    EXPECT_EQ(nan.object, -1);
+    // Classes with no object: hasClass false.
+    EXPECT_FALSE(mp.hasClass(data.classId("sofa")));
+    EXPECT_TRUE(mp.hasClass(chair));
+}
+
+TEST(ObjectProbabilityMap, ClassWithoutNoiseIsAnErrorOrSkipped) {
+    auto data = test::smallMap();
+    data.class_noise[data.classId("door")].reset();
+    try {
+        ObjectProbabilityMap mp(data, {});
+        FAIL() << "expected an exception";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'door'"), std::string::npos) << e.what();
+    }
+    ObjectProbabilityMap::Options opt;
+    opt.skip_classes_without_noise = true;
+    const ObjectProbabilityMap mp(data, opt);
+    EXPECT_FALSE(mp.hasClass(data.classId("door")));
+    ASSERT_EQ(mp.skippedClasses().size(), 1u);
+    EXPECT_EQ(mp.skippedClasses()[0], data.classId("door"));
+    // A per-object noise is enough for its class.
+    data.objects[3].noise = test::noise(0.3, 0.1, 2.0);
+    EXPECT_NO_THROW(ObjectProbabilityMap(data, {}));
+}
+
+}  // namespace
+}  // namespace simp::maps
