@@ -1,0 +1,162 @@
+/// The sub-commands of EvalApp (EvalApp.cpp holds the command-line parsing).
+#include <mrpt/config/CConfigFile.h>
+#include <simp/eval/BatchConfig.h>
+#include <simp/eval/BatchRunner.h>
+#include <simp/eval/BatchTables.h>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/EvalApp.h>
+#include <simp/eval/MapMetrics.h>
+#include <simp/eval/Plots.h>
+#include <simp/eval/Report.h>
+#include <simp/world/World.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace simp::eval {
+namespace {
+
+void requireFile(const std::string& path, const std::string& what) {
+    if (!fs::is_regular_file(path)) throw std::runtime_error(what + " '" + path + "': file not found");
+}
+
+void requireDir(const std::string& path, const std::string& what) {
+    if (!fs::is_directory(path)) throw std::runtime_error(what + " '" + path + "': directory not found");
+}
+
+/// An .ini file given with --config, checked to exist.
+std::unique_ptr<mrpt::config::CConfigFile> openIni(const std::string& path) {
+    requireFile(path, "config");
+    return std::make_unique<mrpt::config::CConfigFile>(path);
+}
+
+void writeText(const fs::path& path, const std::string& text) {
+    std::ofstream f(path);
+    if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
+    f << text;
+}
+
+}  // namespace
+
+int EvalApp::runTraj(std::ostream& out) {
+    const std::string gt_path = required("--gt"), est_path = required("--est");
+    requireFile(gt_path, "ground-truth trajectory");
+    requireFile(est_path, "estimated trajectory");
+    TrajMetricsParams p;
+    if (has("--config")) {
+        const auto ini = openIni(options_.at("--config"));
+        p.max_trans_m = ini->read_double("metrics", "max_trans_m", p.max_trans_m);
+        p.max_rot_rad = ini->read_double("metrics", "max_rot_rad", p.max_rot_rad);
+        p.max_outside_s = ini->read_double("metrics", "max_outside_s", p.max_outside_s);
+        p.convergence_fraction = ini->read_double("metrics", "convergence_fraction", p.convergence_fraction);
+    }
+    p.max_trans_m = number("--max-trans", p.max_trans_m);
+    p.max_rot_rad = number("--max-rot", p.max_rot_rad);
+    p.max_outside_s = number("--max-outside", p.max_outside_s);
+    p.convergence_fraction = number("--fraction", p.convergence_fraction);
+    if (!(p.max_trans_m > 0 && p.max_rot_rad > 0 && p.max_outside_s >= 0 && p.convergence_fraction > 0 &&
+          p.convergence_fraction <= 1))
+        throw std::invalid_argument(
+            "simp-eval traj: bounds must be positive and the convergence fraction in (0, 1]");
+
+    const auto gt = io::readTum(gt_path);
+    const auto est = io::readTum(est_path);
+    if (gt.size() < 2)
+        throw std::invalid_argument("ground-truth file '" + gt_path + "': " + std::to_string(gt.size()) +
+                                    " poses, at least 2 are needed");
+    if (est.empty()) throw std::invalid_argument("estimate file '" + est_path + "': no poses");
+    TrajMetrics m;
+    try {
+        m = evaluateTrajectory(gt, est, p);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("'" + est_path + "' vs '" + gt_path + "': " + e.what());
+    }
+    out << "trajectory evaluation: " << est_path << " against " << gt_path << "\n" << trajSummaryText(m, p);
+    if (has("--png")) {
+        world::World w;
+        const bool with_world = has("--world");
+        if (with_world) {
+            requireDir(options_.at("--world"), "world");
+            w = world::loadWorld(options_.at("--world"));
+        }
+        writePng(options_.at("--png"), drawTrajectoryFigure(gt, est, m, p, with_world ? &w : nullptr));
+        out << "figure: " << options_.at("--png") << "\n";
+    }
+    if (has("--json")) out << toJson(m).dump() << "\n";
+    return 0;
+}
+
+int EvalApp::runMap(std::ostream& out) {
+    const std::string gt_dir = required("--gt"), map_dir = required("--map");
+    requireDir(gt_dir, "ground-truth world");
+    requireDir(map_dir, "map world");
+    MapMatchParams p;
+    if (has("--config"))
+        p.max_center_dist_m =
+            openIni(options_.at("--config"))->read_double("map_metrics", "max_center_dist_m", p.max_center_dist_m);
+    p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m);
+    if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("simp-eval map: --max-center-dist must be > 0");
+    const world::World gt = world::loadWorld(gt_dir);
+    const world::World map = world::loadWorld(map_dir);
+    MapMetrics m;
+    try {
+        m = evaluateMap(gt.objects, map.objects, p);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("map '" + map_dir + "' vs ground truth '" + gt_dir + "': " + e.what());
+    }
+    out << "map evaluation: " << map_dir << " against " << gt_dir << " (centre gate " << fmt(p.max_center_dist_m, 2)
+        << " m)\n\n"
+        << mapMarkdownTable(m) << "\n";
+    if (has("--png")) {
+        writePng(options_.at("--png"), drawMapEvaluation(gt, map, m));
+        out << "figure: " << options_.at("--png") << "\n";
+    }
+    if (has("--json")) out << toJson(m).dump() << "\n";
+    return 0;
+}
+
+int EvalApp::runPlotMap(std::ostream& out) {
+    const std::string dir = required("--world"), png = required("--png");
+    requireDir(dir, "world");
+    writePng(png, drawObjectMap(world::loadWorld(dir)));
+    out << "figure: " << png << "\n";
+    return 0;
+}
+
+int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
+    const std::string ini = required("--config"), out_dir = required("--out");
+    BatchConfig cfg = loadBatchConfig(ini);
+    if (has("--cores")) {
+        const double cores = number("--cores", cfg.cores);
+        if (cores < 1 || cores != std::floor(cores))
+            throw std::invalid_argument("simp-eval batch: --cores must be a positive integer");
+        cfg.cores = static_cast<int>(cores);
+    }
+    fs::create_directories(out_dir);
+    err << "batch configuration (" << ini << "):\n" << cfg.dump();
+    const auto records = eval::runBatch(cfg, out_dir, err);
+    const auto summary = summarize(cfg, records);
+    const std::string md = batchMarkdown(cfg, summary);
+    writeText(fs::path(out_dir) / "tables.md", md);
+    writeText(fs::path(out_dir) / "runs.csv", runsCsv(records));
+    writeText(fs::path(out_dir) / "summary.csv", summaryCsv(cfg, summary));
+    std::size_t failed = 0;
+    for (const auto& r : records)
+        if (r.status != "ok") {
+            ++failed;
+            err << "run " << r.sequence << "/" << r.method << "/seed" << r.seed << ": " << r.status << ": " << r.error
+                << "\n";
+        }
+    out << md << "tables: " << (fs::path(out_dir) / "tables.md").string() << ", runs: "
+        << (fs::path(out_dir) / "runs.csv").string() << ", summary: " << (fs::path(out_dir) / "summary.csv").string()
+        << "\n";
+    if (failed) out << failed << " of " << records.size() << " runs failed (counted as unsuccessful)\n";
+    return 0;
+}
+
+}  // namespace simp::eval

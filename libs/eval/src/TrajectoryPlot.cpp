@@ -1,0 +1,101 @@
+#include <opencv2/imgproc.hpp>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/Plots.h>
+#include <simp/eval/Report.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace simp::eval {
+namespace {
+
+const cv::Scalar kGt(40, 160, 40), kEstBefore(0, 165, 255), kEstAfter(30, 30, 220), kConv(200, 90, 0),
+    kBlack(0, 0, 0), kGrid(215, 215, 215);
+
+/// One error panel: values over time, a dashed bound, vertical event lines.
+void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, double bound, double y_max,
+               const std::string& label, bool translation) {
+    const double t_max = std::max(m.duration_s, 1e-9);
+    const auto px = [&](double t, double v) {
+        const double u = std::clamp(t / t_max, 0.0, 1.0), w = std::clamp(v / y_max, 0.0, 1.0);
+        return cv::Point(area.x + static_cast<int>(u * area.width), area.y + area.height - static_cast<int>(w * area.height));
+    };
+    cv::rectangle(img, area, kBlack, 1);
+    for (int k = 1; k < 4; ++k) {  // y grid
+        const double v = y_max * k / 4;
+        cv::line(img, px(0, v), px(t_max, v), kGrid, 1);
+        cv::putText(img, fmt(v, 2), {area.x - 44, px(0, v).y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
+    }
+    for (double f = 0; f <= 1.0001; f += 0.25)  // time ticks
+        cv::putText(img, fmt(f * m.duration_s, 0), {px(f * t_max, 0).x - 8, area.y + area.height + 14},
+                    cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
+    for (int x = area.x; x < area.x + area.width; x += 12)  // dashed bound
+        cv::line(img, {x, px(0, bound).y}, {std::min(x + 6, area.x + area.width), px(0, bound).y}, kBlack, 1);
+    std::vector<cv::Point> pts;
+    for (const auto& s : m.errors) pts.push_back(px(s.t_s - m.start_s, translation ? s.trans_m : s.rot_rad));
+    if (pts.size() > 1) cv::polylines(img, pts, false, kEstAfter, 1, cv::LINE_AA);
+    if (m.convergence_time_s) cv::line(img, px(*m.convergence_time_s, 0), px(*m.convergence_time_s, y_max), kConv, 2);
+    if (m.divergence_time_s)
+        cv::line(img, px(*m.divergence_time_s, 0), px(*m.divergence_time_s, y_max), cv::Scalar(0, 0, 255), 2);
+    cv::putText(img, label, {area.x + 6, area.y + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kBlack, 1, cv::LINE_AA);
+}
+
+}  // namespace
+
+cv::Mat3b drawErrorPlot(const TrajMetrics& m, const TrajMetricsParams& p, int width, int height) {
+    cv::Mat3b img(height, width, cv::Vec3b(255, 255, 255));
+    const int left = 56, right = 16, top = 8, gap = 28, bottom = 34;
+    const int panel_h = (height - top - gap - bottom) / 2;
+    const cv::Rect a(left, top, width - left - right, panel_h), b(left, top + panel_h + gap, width - left - right, panel_h);
+    const auto yMax = [&](bool trans, double bound) {
+        double mx = 0;
+        for (const auto& s : m.errors) mx = std::max(mx, trans ? s.trans_m : s.rot_rad);
+        return std::max(2.0 * bound, std::min(mx * 1.05, 6.0 * bound));  // errors above are clipped at the top
+    };
+    drawPanel(img, a, m, p.max_trans_m, yMax(true, p.max_trans_m), "translation error (m)", true);
+    drawPanel(img, b, m, p.max_rot_rad, yMax(false, p.max_rot_rad), "rotation error (rad)", false);
+    std::string status = "time since start (s)";
+    if (m.convergence_time_s) status += "   converged at " + fmt(*m.convergence_time_s, 1) + " s (blue)";
+    if (m.divergence_time_s) status += "   diverged at " + fmt(*m.divergence_time_s, 1) + " s (red)";
+    status += m.success ? "   success" : "   failure";
+    cv::putText(img, status, {left, height - 6}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kBlack, 1, cv::LINE_AA);
+    return img;
+}
+
+cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& gt, const std::vector<io::StampedPose2D>& est,
+                               const TrajMetrics& m, const TrajMetricsParams& p, const world::World* world) {
+    double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+    for (const auto* traj : {&gt, &est})
+        for (const auto& s : *traj) {
+            x0 = std::min(x0, s.pose.x), y0 = std::min(y0, s.pose.y);
+            x1 = std::max(x1, s.pose.x), y1 = std::max(y1, s.pose.y);
+        }
+    const mrpt::maps::COccupancyGridMap2D empty_grid;
+    Canvas c = makeCanvasFor(world ? world->floorplan : empty_grid, x0, y0, x1, y1);
+
+    std::vector<cv::Point> gt_px;
+    for (const auto& s : gt) gt_px.push_back(c.toPixel(s.pose.x, s.pose.y));
+    cv::polylines(c.image, gt_px, false, kGt, 2, cv::LINE_AA);
+    const double t_conv = m.convergence_time_s ? m.start_s + *m.convergence_time_s : std::numeric_limits<double>::max();
+    std::vector<cv::Point> after;
+    for (const auto& s : est) {
+        if (s.t_s < m.start_s || s.t_s > m.start_s + m.duration_s) continue;
+        if (s.t_s < t_conv) cv::circle(c.image, c.toPixel(s.pose.x, s.pose.y), 2, kEstBefore, cv::FILLED, cv::LINE_AA);
+        else after.push_back(c.toPixel(s.pose.x, s.pose.y));
+    }
+    if (after.size() > 1) cv::polylines(c.image, after, false, kEstAfter, 2, cv::LINE_AA);
+    if (!gt_px.empty()) cv::circle(c.image, gt_px.front(), 6, kGt, 2, cv::LINE_AA);
+    if (!after.empty()) cv::drawMarker(c.image, after.front(), kConv, cv::MARKER_CROSS, 16, 3);
+    drawLegend(c, {{"ground truth (o = start)", kGt},
+                   {"estimate before convergence", kEstBefore},
+                   {"estimate after convergence", kEstAfter},
+                   {"convergence", kConv}});
+
+    const cv::Mat3b errors = drawErrorPlot(m, p, c.image.cols, 320);
+    cv::Mat3b figure;
+    cv::vconcat(c.image, errors, figure);
+    return figure;
+}
+
+}  // namespace simp::eval

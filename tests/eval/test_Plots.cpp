@@ -1,0 +1,107 @@
+// The figures: sizes, the colours of what they show, PNG files.
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/Plots.h>
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+using namespace simp::eval;
+
+namespace {
+
+/// A 10 m x 6 m free floor with a wall along x at y = 5 m, 0.05 m cells.
+simp::world::World smallWorld() {
+    simp::world::World w;
+    w.floorplan.setSize(0.0, 10.0, 0.0, 6.0, 0.05, 1.0f);
+    const int wall_cy = 100;  // cell row [5.00, 5.05) m
+    for (int cx = 0; cx < static_cast<int>(w.floorplan.getSizeX()); ++cx) w.floorplan.setCell(cx, wall_cy, 0.0f);
+    w.objects.class_names = {"table", "chair"};
+    w.objects.class_noise.resize(2);
+    simp::world::MapObject table;
+    table.box = simp::geometry::makeUprightBox({3, 2, 0.4}, {2, 1, 0.8}, 0.3);
+    simp::world::MapObject chair;
+    chair.class_id = 1;
+    chair.box = simp::geometry::makeUprightBox({7, 3, 0.4}, {0.5, 0.5, 0.8}, 0);
+    w.objects.objects = {table, chair};
+    return w;
+}
+
+/// Number of pixels of exactly this BGR colour.
+int countColor(const cv::Mat3b& img, const cv::Scalar& c) {
+    const cv::Vec3b v(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
+    int n = 0;
+    for (int r = 0; r < img.rows; ++r)
+        for (int k = 0; k < img.cols; ++k) n += img(r, k) == v;
+    return n;
+}
+
+}  // namespace
+
+TEST(Plots, FloorplanCanvasMapsWorldToPixels) {
+    const auto w = smallWorld();
+    const Canvas c = makeFloorplanCanvas(w.floorplan, 2, 300);
+    EXPECT_EQ(c.map_width_px, 400);  // 200 cells x 2
+    EXPECT_EQ(c.image.rows, 240);
+    EXPECT_EQ(c.image.cols, 700);
+    EXPECT_EQ(c.toPixel(0.0, 6.0), cv::Point(0, 0));      // top-left = (x_min, y_max)
+    EXPECT_EQ(c.toPixel(10.0, 0.0), cv::Point(400, 240));  // bottom-right
+    // the wall at y = 5 m is black, free space white
+    EXPECT_EQ(c.image(c.toPixel(5.0, 5.02).y, 200), cv::Vec3b(0, 0, 0));
+    EXPECT_EQ(c.image(c.toPixel(5.0, 3.0).y, 200), cv::Vec3b(255, 255, 255));
+}
+
+TEST(Plots, TrajectoryFigureShowsBothPathsAndWritesPng) {
+    const auto w = smallWorld();
+    std::vector<simp::io::StampedPose2D> gt, est;
+    for (int k = 0; k <= 20; ++k) {
+        gt.push_back({0.5 * k, {1.0 + 0.4 * k, 1.0, 0.0}});
+        est.push_back({0.5 * k, {k < 6 ? 8.0 : 1.0 + 0.4 * k, k < 6 ? 4.0 : 1.1, 0.0}});
+    }
+    const auto m = evaluateTrajectory(gt, est);
+    ASSERT_TRUE(m.converged);
+    const cv::Mat3b fig = drawTrajectoryFigure(gt, est, m, {}, &w);
+    EXPECT_EQ(fig.cols, 700);
+    EXPECT_EQ(fig.rows, 240 + 320);  // floor plan + error panel
+    EXPECT_GT(countColor(fig, cv::Scalar(40, 160, 40)), 50);  // ground truth green
+    EXPECT_GT(countColor(fig, cv::Scalar(200, 90, 0)), 20);   // convergence marker / line
+    const auto png = (fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "traj.png").string();
+    writePng(png, fig);
+    const cv::Mat back = cv::imread(png);
+    EXPECT_EQ(back.size(), fig.size());
+    // without a world: a blank canvas around the trajectories
+    const cv::Mat3b blank = drawTrajectoryFigure(gt, est, m, {}, nullptr);
+    EXPECT_GT(blank.cols, 300);
+}
+
+TEST(Plots, ObjectMapAndMapEvaluationColours) {
+    const auto w = smallWorld();
+    const cv::Mat3b map_fig = drawObjectMap(w);
+    EXPECT_GT(countColor(map_fig, classColor(0)), 30);  // table outline + legend swatch
+    EXPECT_GT(countColor(map_fig, classColor(1)), 30);
+
+    auto pred = w;
+    pred.objects.objects.pop_back();  // chair missed
+    simp::world::MapObject ghost;
+    ghost.box = simp::geometry::makeUprightBox({8, 1, 0.4}, {1, 1, 0.8}, 0);  // a false table
+    pred.objects.objects.push_back(ghost);
+    const auto m = evaluateMap(w.objects, pred.objects);
+    ASSERT_EQ(m.matches.size(), 1u);
+    ASSERT_EQ(m.missed_gt.size(), 1u);
+    ASSERT_EQ(m.false_pred.size(), 1u);
+    const cv::Mat3b eval_fig = drawMapEvaluation(w, pred, m);
+    EXPECT_GT(countColor(eval_fig, cv::Scalar(40, 170, 40)), 30);  // matched
+    EXPECT_GT(countColor(eval_fig, cv::Scalar(220, 120, 0)), 30);  // missed
+    EXPECT_GT(countColor(eval_fig, cv::Scalar(30, 30, 220)), 30);  // false
+}
+
+TEST(Plots, UnwritablePathThrowsNamingIt) {
+    const cv::Mat3b img(10, 10, cv::Vec3b(0, 0, 0));
+    try {
+        writePng((fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "x.notanimage").string(), img);
+        FAIL();
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("x.notanimage"), std::string::npos) << e.what();
+    }
+}
