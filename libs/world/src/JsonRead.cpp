@@ -1,5 +1,6 @@
 #include "JsonRead.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -22,12 +23,40 @@ json readJsonFile(const std::string& path) {
     }
 }
 
+namespace {
+
+/// Compact text, one line per element for containers of containers (readable, diffable).
+void dumpReadable(const nlohmann::ordered_json& j, const std::string& indent, std::string& out) {
+    const auto isContainer = [](const nlohmann::ordered_json& e) { return e.is_object() || e.is_array(); };
+    const bool nested = (j.is_object() || j.is_array()) && !j.empty() &&
+                        (j.is_object() ? std::any_of(j.begin(), j.end(), isContainer) || indent.empty()
+                                       : std::any_of(j.begin(), j.end(), isContainer));
+    if (!nested || indent.size() >= 4) {
+        out += j.dump();
+        return;
+    }
+    const std::string inner = indent + "  ";
+    out += j.is_object() ? "{\n" : "[\n";
+    std::size_t k = 0;
+    for (auto it = j.begin(); it != j.end(); ++it, ++k) {
+        out += inner;
+        if (j.is_object()) out += nlohmann::ordered_json(it.key()).dump() + ": ";
+        dumpReadable(*it, inner, out);
+        out += (k + 1 < j.size()) ? ",\n" : "\n";
+    }
+    out += indent + (j.is_object() ? "}" : "]");
+}
+
+}  // namespace
+
 void writeJsonFile(const nlohmann::ordered_json& j, const std::string& path) {
     const std::filesystem::path p(path);
     if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
     std::ofstream out(path);
     if (!out) fail(path, "", "cannot open for writing");
-    out << j.dump(2) << "\n";
+    std::string text;
+    dumpReadable(j, "", text);
+    out << text << "\n";
     if (!out) fail(path, "", "write failed");
 }
 

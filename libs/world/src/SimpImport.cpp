@@ -276,7 +276,9 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         noise.mean_m = R.transpose() * (px.toWorld(Eigen::Vector2d(mx[i], my[i])) - fit.center_m);
         const Eigen::Matrix2d cov_world = res * res * Eigen::Vector2d(sx[i] * sx[i], sy[i] * sy[i]).asDiagonal();
         noise.cov_m2 = R.transpose() * cov_world * R;
-        noise.cov_m2(1, 0) = noise.cov_m2(0, 1);  // exactly symmetric
+        // Exactly symmetric; drop rounding residue of cos(90 deg) for axis-aligned objects.
+        if (std::abs(noise.cov_m2(0, 1)) < 1e-12 * noise.cov_m2.trace()) noise.cov_m2(0, 1) = 0;
+        noise.cov_m2(1, 0) = noise.cov_m2(0, 1);
         noise.exponent_b = b[i];
         o.noise = noise;
         o.room_id = roomOfBox(w.rooms, o.box);
