@@ -1,6 +1,7 @@
 /// \file Omni3DBox.cpp
 #include <simp/labels/Omni3DBox.h>
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <stdexcept>
 

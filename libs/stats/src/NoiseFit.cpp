@@ -2,6 +2,7 @@
 #include <simp/stats/NoiseFit.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <cmath>
 #include <stdexcept>
 #include <string>
