@@ -1,0 +1,61 @@
+#pragma once
+/// \file LocalizeApp.h
+/// simp-localize: global localization of a rawlog on a world directory. The program's main()
+/// is a try/catch around initialize() + run(); tests drive the same class in-process
+/// (as mrpt::apps::MonteCarloLocalization_App).
+
+#include <mrpt/bayes/CParticleFilter.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/Tum.h>
+#include <simp/localization/LocalizeOptions.h>
+#include <simp/localization/ParticleSummary.h>
+#include <simp/localization/StepRecord.h>
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace simp::localization {
+
+class LocalizeApp {
+   public:
+    /// Command line (doc/localization.md):
+    ///   simp-localize --world W --rawlog Q/sequence.rawlog --out O [--config INI]
+    ///                 [--method simp|edt|d|o] [--particles N] [--seed S] [--quiet]
+    /// Reads and validates the .ini. \throw std::invalid_argument on bad arguments or .ini keys.
+    void initialize(int argc, const char* const* argv);
+    void initialize(const std::vector<std::string>& args);
+
+    /// Runs the filter over the whole rawlog and writes O/estimate.tum, O/steps.csv,
+    /// O/final_particles.txt and O/trajectory.png. \throw std::runtime_error naming the file
+    /// on a missing/corrupt input. Does nothing after --help.
+    void run();
+
+    /// @name Parameters (filled by initialize(); may be changed before run())
+    /// @{
+    std::string world_dir, rawlog_path, out_dir, config_path;
+    mrpt::config::CConfigFileMemory params;  ///< the .ini content (empty without --config)
+    ExperimentOptions experiment;
+    MotionModelOptions motion;
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions pf_options = defaultPfOptions();
+    bool show_progress = true;               ///< progress lines on stderr
+    std::ostream* log = nullptr;             ///< informative messages (nullptr: std::cerr unless quiet)
+    /// @}
+
+    /// @name Results of run()
+    /// @{
+    bool help_requested = false;             ///< --help was given: nothing to run
+    std::vector<StepRecord> steps;           ///< one per frame
+    std::vector<io::StampedPose2D> estimate; ///< the estimate.tum lines
+    std::vector<mrpt::math::TPose2D> final_particles;
+    std::string sensor_model_used;           ///< simp | edt | d | o
+    /// @}
+
+    static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
+
+   private:
+    void loadConfig();
+};
+
+}  // namespace simp::localization

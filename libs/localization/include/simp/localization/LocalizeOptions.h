@@ -1,0 +1,65 @@
+#pragma once
+/// \file LocalizeOptions.h
+/// The project's own .ini keys of simp-localize: [LocalizationExperiment] and [MotionModel].
+/// MRPT's own sections ([PF_options], [KLD_options], [MetricMap]) are read by MRPT's loaders.
+
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace simp::localization {
+
+/// How the pose written to estimate.tum is computed from the particle set.
+enum class EstimateMode {
+    Cluster,  ///< weighted mean of the highest-weight cluster (default; see ParticleSummary.h)
+    Mean      ///< weighted mean of all particles
+};
+
+/// [LocalizationExperiment]: the run itself.
+struct ExperimentOptions : public mrpt::config::CLoadableOptions {
+    std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
+    std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
+    std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else simp|edt|d|o
+    double free_cells_threshold = 0.7;    ///< a floor-plan cell is free when p_free >= this (MRPT's default)
+    bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
+    double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
+    double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
+    EstimateMode estimate_mode = EstimateMode::Cluster;
+    double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
+    double cluster_max_dphi = 0.7853981633974483;  ///< cluster: and within this heading difference (rad)
+    double cluster_cell_m = 0.5;          ///< cluster: xy bin size used to find the peak (m)
+    int cluster_phi_bins = 8;             ///< cluster: heading bins used to find the peak
+    bool write_particles = true;          ///< write O/final_particles.txt
+    bool write_png = true;                ///< write O/trajectory.png
+
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
+    void dumpToTextStream(std::ostream& out) const override;
+};
+
+/// [MotionModel]: the odometry noise, mapped onto MRPT's CActionRobotMovement2D::TMotionModelOptions.
+/// Defaults: the paper's sigma_odom = (0.15 m, 0.15 m, 0.15 rad) as the authors' code applies it,
+/// i.e. proportional to the motion (doc/localization.md, "Motion model").
+struct MotionModelOptions : public mrpt::config::CLoadableOptions {
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mrpt_options = paperDefaults();
+
+    static mrpt::obs::CActionRobotMovement2D::TMotionModelOptions paperDefaults();
+    void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
+    void dumpToTextStream(std::ostream& out) const override;
+};
+
+/// Throws std::invalid_argument naming `file`, the section and the key when `section`
+/// holds a key that is not in `known` (MRPT would silently ignore it).
+void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                    const std::vector<std::string>& known, const std::string& file);
+
+/// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
+void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);
+
+/// Sensor model names accepted by --method and sensor_model.
+const std::vector<std::string>& sensorModelNames();
+
+}  // namespace simp::localization

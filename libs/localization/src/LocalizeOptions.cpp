@@ -1,0 +1,219 @@
+#include <simp/localization/LocalizeOptions.h>
+
+#include <mrpt/core/bits_math.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace simp::localization {
+namespace {
+
+constexpr const char* kExperiment = "LocalizationExperiment";
+constexpr const char* kMotion = "MotionModel";
+
+std::string where(const std::string& section, const std::string& key) { return "[" + section + "] " + key; }
+
+/// Strictly parsed number: the whole value must be a finite number.
+double readNumber(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+                  double def) {
+    if (!cfg.keyExists(section, key)) return def;
+    const std::string text = cfg.read_string(section, key, "");
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(v))
+        throw std::invalid_argument(where(section, key) + " = '" + text + "' is not a finite number");
+    return v;
+}
+
+double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
+                    double def, bool allow_zero) {
+    const double v = readNumber(cfg, section, key, def);
+    if (v < 0 || (!allow_zero && v == 0))
+        throw std::invalid_argument(where(section, key) + " must be " + (allow_zero ? ">= 0" : "> 0"));
+    return v;
+}
+
+bool readBool(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key, bool def) {
+    if (!cfg.keyExists(section, key)) return def;
+    std::string t = cfg.read_string(section, key, "");
+    std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (t == "true" || t == "1" || t == "yes") return true;
+    if (t == "false" || t == "0" || t == "no") return false;
+    throw std::invalid_argument(where(section, key) + " = '" + t + "' is not a boolean (true/false)");
+}
+
+std::string joined(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+    return s;
+}
+
+}  // namespace
+
+const std::vector<std::string>& sensorModelNames() {
+    static const std::vector<std::string> names{"simp", "edt", "d", "o"};
+    return names;
+}
+
+void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    const double n = readPositive(cfg, s, "particles_count", static_cast<double>(particles_count), false);
+    if (n != std::floor(n)) throw std::invalid_argument(where(s, "particles_count") + " must be an integer");
+    particles_count = static_cast<std::size_t>(n);
+    const double sd = readPositive(cfg, s, "seed", seed, true);
+    if (sd != std::floor(sd) || sd > 4294967295.0)
+        throw std::invalid_argument(where(s, "seed") + " must be an integer in [0, 2^32)");
+    seed = static_cast<std::uint32_t>(sd);
+    sensor_model = cfg.read_string(s, "sensor_model", sensor_model);
+    if (!sensor_model.empty() &&
+        std::find(sensorModelNames().begin(), sensorModelNames().end(), sensor_model) == sensorModelNames().end())
+        throw std::invalid_argument(where(s, "sensor_model") + " = '" + sensor_model + "' is not one of " +
+                                    joined(sensorModelNames()));
+    free_cells_threshold = readNumber(cfg, s, "free_cells_threshold", free_cells_threshold);
+    if (!(free_cells_threshold > 0 && free_cells_threshold <= 1))
+        throw std::invalid_argument(where(s, "free_cells_threshold") + " must be in (0, 1]");
+    prune_outside_free_space = readBool(cfg, s, "prune_outside_free_space", prune_outside_free_space);
+    update_min_d_xy = readPositive(cfg, s, "update_min_d_xy", update_min_d_xy, true);
+    update_min_d_phi = readPositive(cfg, s, "update_min_d_phi", update_min_d_phi, true);
+    const std::string mode = cfg.read_string(s, "estimate_mode", estimate_mode == EstimateMode::Cluster ? "cluster" : "mean");
+    if (mode == "cluster")
+        estimate_mode = EstimateMode::Cluster;
+    else if (mode == "mean")
+        estimate_mode = EstimateMode::Mean;
+    else
+        throw std::invalid_argument(where(s, "estimate_mode") + " = '" + mode + "' is not one of cluster, mean");
+    cluster_radius_m = readPositive(cfg, s, "cluster_radius_m", cluster_radius_m, false);
+    cluster_max_dphi = readPositive(cfg, s, "cluster_max_dphi", cluster_max_dphi, false);
+    cluster_cell_m = readPositive(cfg, s, "cluster_cell_m", cluster_cell_m, false);
+    const double bins = readPositive(cfg, s, "cluster_phi_bins", cluster_phi_bins, false);
+    if (bins != std::floor(bins) || bins > 360)
+        throw std::invalid_argument(where(s, "cluster_phi_bins") + " must be an integer in [1, 360]");
+    cluster_phi_bins = static_cast<int>(bins);
+    write_particles = readBool(cfg, s, "write_particles", write_particles);
+    write_png = readBool(cfg, s, "write_png", write_png);
+}
+
+void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
+    out << "[" << kExperiment << "]\n"
+        << "particles_count          = " << particles_count << "\n"
+        << "seed                     = " << seed << "\n"
+        << "sensor_model             = " << (sensor_model.empty() ? "(object map's)" : sensor_model) << "\n"
+        << "free_cells_threshold     = " << free_cells_threshold << "\n"
+        << "prune_outside_free_space = " << (prune_outside_free_space ? "true" : "false") << "\n"
+        << "update_min_d_xy (m)      = " << update_min_d_xy << "\n"
+        << "update_min_d_phi (rad)   = " << update_min_d_phi << "\n"
+        << "estimate_mode            = " << (estimate_mode == EstimateMode::Cluster ? "cluster" : "mean") << "\n"
+        << "cluster_radius_m         = " << cluster_radius_m << "\n"
+        << "cluster_max_dphi (rad)   = " << cluster_max_dphi << "\n"
+        << "cluster_cell_m           = " << cluster_cell_m << "\n"
+        << "cluster_phi_bins         = " << cluster_phi_bins << "\n";
+}
+
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paperDefaults() {
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions o;
+    o.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
+    // sigma_odom = (0.15, 0.15, 0.15): std of translation 0.15 m per metre travelled, of rotation
+    // 0.15 rad per radian turned (the authors' MixedFSR scales the noise by the motion).
+    o.gaussianModel.a1 = 0.15;   // m / m
+    o.gaussianModel.a2 = 0.0;    // m / rad
+    o.gaussianModel.a3 = 0.0;    // rad / m
+    o.gaussianModel.a4 = 0.15;   // rad / rad
+    o.gaussianModel.minStdXY = 0.01;   // m
+    o.gaussianModel.minStdPHI = 0.01;  // rad
+    return o;
+}
+
+void MotionModelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    using M = mrpt::obs::CActionRobotMovement2D;
+    auto& o = mrpt_options;
+    const std::string model = cfg.read_string(s, "modelSelection", o.modelSelection == M::mmGaussian ? "gaussian" : "thrun");
+    if (model == "gaussian")
+        o.modelSelection = M::mmGaussian;
+    else if (model == "thrun")
+        o.modelSelection = M::mmThrun;
+    else
+        throw std::invalid_argument(where(s, "modelSelection") + " = '" + model + "' is not one of gaussian, thrun");
+    auto& g = o.gaussianModel;
+    g.a1 = readPositive(cfg, s, "a1", g.a1, true);
+    g.a2 = readPositive(cfg, s, "a2", g.a2, true);
+    g.a3 = readPositive(cfg, s, "a3", g.a3, true);
+    g.a4 = readPositive(cfg, s, "a4", g.a4, true);
+    g.minStdXY = readPositive(cfg, s, "minStdXY", g.minStdXY, true);
+    g.minStdPHI = readPositive(cfg, s, "minStdPHI", g.minStdPHI, true);
+    auto& t = o.thrunModel;
+    const double np = readPositive(cfg, s, "nParticlesCount", t.nParticlesCount, false);
+    t.nParticlesCount = static_cast<std::uint32_t>(np);
+    t.alfa1_rot_rot = static_cast<float>(readPositive(cfg, s, "alfa1_rot_rot", t.alfa1_rot_rot, true));
+    t.alfa2_rot_trans = static_cast<float>(readPositive(cfg, s, "alfa2_rot_trans", t.alfa2_rot_trans, true));
+    t.alfa3_trans_trans = static_cast<float>(readPositive(cfg, s, "alfa3_trans_trans", t.alfa3_trans_trans, true));
+    t.alfa4_trans_rot = static_cast<float>(readPositive(cfg, s, "alfa4_trans_rot", t.alfa4_trans_rot, true));
+    t.additional_std_XY = static_cast<float>(readPositive(cfg, s, "additional_std_XY", t.additional_std_XY, true));
+    t.additional_std_phi = static_cast<float>(readPositive(cfg, s, "additional_std_phi", t.additional_std_phi, true));
+}
+
+void MotionModelOptions::dumpToTextStream(std::ostream& out) const {
+    const auto& o = mrpt_options;
+    out << "[" << kMotion << "]\n"
+        << "modelSelection = " << (o.modelSelection == mrpt::obs::CActionRobotMovement2D::mmGaussian ? "gaussian" : "thrun")
+        << "\n"
+        << "a1 (m/m) = " << o.gaussianModel.a1 << ", a2 (m/rad) = " << o.gaussianModel.a2
+        << ", a3 (rad/m) = " << o.gaussianModel.a3 << ", a4 (rad/rad) = " << o.gaussianModel.a4 << "\n"
+        << "minStdXY (m) = " << o.gaussianModel.minStdXY << ", minStdPHI (rad) = " << o.gaussianModel.minStdPHI << "\n";
+}
+
+void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
+                    const std::vector<std::string>& known, const std::string& file) {
+    if (!cfg.sectionExists(section)) return;
+    std::vector<std::string> keys;
+    cfg.getAllKeys(section, keys);
+    for (const auto& k : keys)
+        if (std::find(known.begin(), known.end(), k) == known.end())
+            throw std::invalid_argument(file + ": unknown key '" + k + "' in section [" + section +
+                                        "] (known keys: " + joined(known) + ")");
+}
+
+void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
+    checkKnownKeys(cfg, kExperiment,
+                   {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
+                    "update_min_d_xy", "update_min_d_phi", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
+                    "cluster_cell_m", "cluster_phi_bins", "write_particles", "write_png"},
+                   file);
+    checkKnownKeys(cfg, kMotion,
+                   {"modelSelection", "a1", "a2", "a3", "a4", "minStdXY", "minStdPHI", "nParticlesCount",
+                    "alfa1_rot_rot", "alfa2_rot_trans", "alfa3_trans_trans", "alfa4_trans_rot", "additional_std_XY",
+                    "additional_std_phi"},
+                   file);
+    checkKnownKeys(cfg, "PF_options",
+                   {"PF_algorithm", "resamplingMethod", "adaptiveSampleSize", "BETA", "sampleSize", "powFactor",
+                    "max_loglikelihood_dyn_range", "pfAuxFilterOptimal_MaximumSearchSamples",
+                    "pfAuxFilterStandard_FirstStageWeightsMonteCarlo", "pfAuxFilterOptimal_MLE"},
+                   file);
+    // The object map's sections (simp::maps::CObjectMap reads them through MRPT's map loader).
+    std::vector<std::string> sections;
+    cfg.getAllSections(sections);
+    for (const auto& sec : sections) {
+        if (sec.rfind("MetricMap_semanticObjectMap_", 0) != 0) continue;
+        if (sec.size() > 13 && sec.compare(sec.size() - 13, 13, "_creationOpts") == 0)
+            checkKnownKeys(cfg, sec, {"map_file", "class_names"}, file);
+        else if (sec.size() > 15 && sec.compare(sec.size() - 15, 15, "_likelihoodOpts") == 0)
+            checkKnownKeys(cfg, sec,
+                           {"sensor_model", "eta", "confidence_thresholds", "default_confidence_threshold",
+                            "mp_resolution_m", "mp_min_probability", "skip_classes_without_noise", "edt_sigma_m",
+                            "edt_max_distance_m", "edt_resolution_m"},
+                           file);
+        else if (sec.size() > 11 && sec.compare(sec.size() - 11, 11, "_insertOpts") == 0)
+            checkKnownKeys(cfg, sec, {}, file);
+    }
+    checkKnownKeys(cfg, "KLD_options",
+                   {"KLD_binSize_XY", "KLD_binSize_PHI", "KLD_delta", "KLD_epsilon", "KLD_minSampleSize",
+                    "KLD_maxSampleSize", "KLD_minSamplesPerBin"},
+                   file);
+}
+
+}  // namespace simp::localization

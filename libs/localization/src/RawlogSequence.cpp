@@ -1,0 +1,150 @@
+#include <simp/localization/RawlogSequence.h>
+
+#include <mrpt/core/exceptions.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/system/filesystem.h>
+
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+namespace simp::localization {
+namespace {
+
+std::optional<double> timeOf(mrpt::Clock::time_point t) {
+    if (t == INVALID_TIMESTAMP) return std::nullopt;
+    return mrpt::Clock::toDouble(t);
+}
+
+/// Motion of one action collection (identity when it holds no 2D movement).
+mrpt::poses::CPose2D incrementOf(const mrpt::obs::CActionCollection& acts) {
+    const auto mv = acts.getBestMovementEstimation();
+    if (!mv) return {};
+    if (mv->estimationMethod == mrpt::obs::CActionRobotMovement2D::emOdometry) return mv->rawOdometryIncrementReading;
+    return mrpt::poses::CPose2D(mv->poseChange.get_ptr()->getMeanVal());
+}
+
+/// Builds frames from entries of either format, in file order.
+class FrameBuilder {
+   public:
+    explicit FrameBuilder(RawlogSequence& seq) : m_seq(seq) {}
+
+    void action(const mrpt::obs::CActionCollection& acts) {
+        m_seq.format = "actions+sensoryframes";
+        m_pending_increment = m_pending_increment + incrementOf(acts);
+        if (!m_action_time) {
+            for (const auto& a : acts) {
+                if (const auto t = timeOf(a->timestamp)) {
+                    m_action_time = t;
+                    break;
+                }
+            }
+        }
+    }
+
+    void sensoryFrame(const mrpt::obs::CSensoryFrame::Ptr& sf) {
+        std::optional<double> t;
+        for (const auto& o : *sf) {
+            if ((t = timeOf(o->timestamp))) break;
+        }
+        if (!t) t = m_action_time;
+        push(sf, t);
+        m_action_time.reset();
+    }
+
+    void observation(const mrpt::obs::CObservation::Ptr& obs) {
+        if (m_seq.format.empty()) m_seq.format = "observations";
+        const auto t = timeOf(obs->timestamp);
+        if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs)) {
+            if (m_pending_sf && t && m_pending_time && *t > *m_pending_time) flushObservations();
+            m_last_odometry = odo->odometry;
+            return;
+        }
+        if (m_pending_sf && t != m_pending_time) flushObservations();
+        if (!m_pending_sf) {
+            m_pending_sf = mrpt::obs::CSensoryFrame::Create();
+            m_pending_time = t;
+        }
+        m_pending_sf->insert(obs);
+    }
+
+    void finish() { flushObservations(); }
+
+   private:
+    void flushObservations() {
+        if (!m_pending_sf) return;
+        if (m_last_odometry) {
+            if (m_odometry_at_last_frame) m_pending_increment = *m_last_odometry - *m_odometry_at_last_frame;
+            m_odometry_at_last_frame = m_last_odometry;
+        }
+        push(m_pending_sf, m_pending_time);
+        m_pending_sf.reset();
+        m_pending_time.reset();
+    }
+
+    void push(const mrpt::obs::CSensoryFrame::Ptr& sf, std::optional<double> t) {
+        SequenceFrame f;
+        f.t_s = t ? *t : static_cast<double>(m_seq.frames.size());
+        f.odometry_increment = m_pending_increment;
+        f.observations = sf;
+        m_seq.frames.push_back(std::move(f));
+        m_pending_increment = mrpt::poses::CPose2D();
+    }
+
+    RawlogSequence& m_seq;
+    mrpt::poses::CPose2D m_pending_increment;
+    std::optional<double> m_action_time;
+    mrpt::obs::CSensoryFrame::Ptr m_pending_sf;
+    std::optional<double> m_pending_time;
+    std::optional<mrpt::poses::CPose2D> m_last_odometry, m_odometry_at_last_frame;
+};
+
+/// The innermost "Message:" line of a nested MRPT exception (the cause), else what().
+std::string innermostMessage(const std::exception& e) {
+    const std::string all = mrpt::exception_to_str(e);
+    const auto pos = all.rfind("Message:");
+    if (pos == std::string::npos) return all;
+    const auto end = all.find('\n', pos);
+    std::string m = all.substr(pos + 8, end == std::string::npos ? std::string::npos : end - pos - 8);
+    return m.erase(0, m.find_first_not_of(' '));
+}
+
+}  // namespace
+
+RawlogSequence loadRawlogSequence(const std::string& path) {
+    if (!mrpt::system::fileExists(path)) throw std::runtime_error("rawlog '" + path + "' does not exist");
+    mrpt::io::CFileGZInputStream in;
+    if (!in.open(path)) throw std::runtime_error("rawlog '" + path + "' cannot be opened");
+    auto arch = mrpt::serialization::archiveFrom(in);
+
+    RawlogSequence seq;
+    FrameBuilder builder(seq);
+    for (;;) {
+        mrpt::serialization::CSerializable::Ptr obj;
+        try {
+            obj = arch.ReadObject();
+        } catch (const mrpt::serialization::CExceptionEOF&) {
+            break;  // a clean end: MRPT raises this only between objects
+        } catch (const std::exception& e) {
+            throw std::runtime_error("rawlog '" + path + "' is corrupt or truncated at entry " +
+                                     std::to_string(seq.entries) + ": " + innermostMessage(e));
+        }
+        ++seq.entries;
+        if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
+            builder.action(*acts);
+        else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+            builder.sensoryFrame(sf);
+        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
+            builder.observation(obs);
+        // other objects (comments, ...) carry nothing the filter uses
+    }
+    builder.finish();
+    if (seq.frames.empty()) throw std::runtime_error("rawlog '" + path + "' holds no sensory frame or observation");
+    return seq;
+}
+
+}  // namespace simp::localization

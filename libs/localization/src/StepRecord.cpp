@@ -1,0 +1,33 @@
+#include <simp/localization/StepRecord.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace simp::localization {
+
+std::string stepsCsvHeader() {
+    return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
+           "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds";
+}
+
+void writeStepsCsv(const std::string& path, const std::vector<StepRecord>& steps) {
+    const auto parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    std::ofstream f(path);
+    if (!f) throw std::runtime_error("cannot write '" + path + "'");
+    f << stepsCsvHeader() << "\n";
+    char line[512];
+    for (const auto& s : steps) {
+        std::snprintf(line, sizeof(line),
+                      "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6f,%zu,%.3f,%zu,%d,%zu,%.6f\n",
+                      s.t_s, s.estimate.x, s.estimate.y, s.estimate.phi, s.mean.x, s.mean.y, s.mean.phi, s.cov(0, 0),
+                      s.cov(0, 1), s.cov(1, 1), s.cov(0, 2), s.cov(1, 2), s.cov(2, 2), s.cluster_weight, s.particles,
+                      s.ess, s.detections, s.updated ? 1 : 0, s.pruned, s.seconds);
+        f << line;
+    }
+    if (!f) throw std::runtime_error("error while writing '" + path + "'");
+}
+
+}  // namespace simp::localization

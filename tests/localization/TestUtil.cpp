@@ -1,0 +1,37 @@
+#include "TestUtil.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace simp::localization::test {
+
+const Scenario& sharedScenario() {
+    static const Scenario sc = makeScenario(std::string(SIMP_TEST_OUTPUT_DIR) + "/localization/scenario", 42);
+    return sc;
+}
+
+std::string freshOutputDir(const std::string& name) {
+    const auto dir = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "localization" / name;
+    std::filesystem::remove_all(dir);
+    return dir.string();
+}
+
+void runApp(LocalizeApp& app, const std::vector<std::string>& args) {
+    std::vector<std::string> full{"simp-localize"};
+    full.insert(full.end(), args.begin(), args.end());
+    full.push_back("--quiet");
+    app.initialize(full);
+    app.run();
+}
+
+double translationError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt) {
+    return std::hypot(est.x - gt.x, est.y - gt.y);
+}
+
+double headingError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt) {
+    return std::abs(mrpt::math::wrapToPi(est.phi - gt.phi));
+}
+
+}  // namespace simp::localization::test

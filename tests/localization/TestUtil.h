@@ -1,0 +1,28 @@
+#pragma once
+/// \file TestUtil.h
+/// Shared by the localization tests: the generated scenario (built once per process) and
+/// helpers to run simp-localize in-process.
+
+#include "SyntheticScenario.h"
+
+#include <simp/localization/LocalizeApp.h>
+
+#include <string>
+#include <vector>
+
+namespace simp::localization::test {
+
+/// The scenario under SIMP_TEST_OUTPUT_DIR/localization/scenario (generated on first use).
+const Scenario& sharedScenario();
+
+/// Output directory for a test (created empty).
+std::string freshOutputDir(const std::string& name);
+
+/// Runs `app` with these arguments (program name prepended, --quiet appended).
+void runApp(LocalizeApp& app, const std::vector<std::string>& args);
+
+/// Pose error of `est` w.r.t. `gt`: translation (m) and absolute heading difference (rad).
+double translationError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt);
+double headingError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt);
+
+}  // namespace simp::localization::test

@@ -1,0 +1,215 @@
+/// simp-localize end to end on a generated world and sequence (tests/localization/SyntheticScenario.h).
+
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+#include <simp/io/Tum.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace simp::localization;
+using namespace simp::localization::test;
+
+namespace {
+
+constexpr double kConvergedXY = 0.3;         // m, the paper's convergence criterion
+constexpr double kConvergedPhi = M_PI / 4;   // rad
+
+std::string slurp(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+std::size_t lineCount(const std::string& path) {
+    std::ifstream f(path);
+    std::size_t n = 0;
+    for (std::string line; std::getline(f, line);)
+        if (!line.empty() && line[0] != '#') ++n;
+    return n;
+}
+
+bool converged(const StepRecord& s, const simp::io::StampedPose2D& gt) {
+    return translationError(s.estimate, gt.pose) <= kConvergedXY && headingError(s.estimate, gt.pose) <= kConvergedPhi;
+}
+
+std::vector<std::string> baseArgs(const Scenario& sc, const std::string& out) {
+    return {"--world", sc.world_dir, "--rawlog", sc.rawlog_path, "--out", out, "--config",
+            std::string(SIMP_SOURCE_DIR) + "/config_ini/simp.ini", "--particles", "2000", "--seed", "3"};
+}
+
+template <class F>
+std::string errorOf(F&& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(LocalizeApp, SimpConvergesGloballyAndStaysConverged) {
+    const Scenario& sc = sharedScenario();
+    const std::string out = freshOutputDir("simp");
+    LocalizeApp app;
+    runApp(app, baseArgs(sc, out));
+    ASSERT_EQ(app.steps.size(), sc.groundtruth.size());
+    EXPECT_EQ(app.sensor_model_used, "simp");
+
+    // The final estimate: within the paper's convergence radius.
+    const auto& last = app.steps.back();
+    EXPECT_LE(translationError(last.estimate, sc.groundtruth.back().pose), kConvergedXY);
+    EXPECT_LE(headingError(last.estimate, sc.groundtruth.back().pose), kConvergedPhi);
+
+    // Converged before the end: the final converged streak starts in the first 60 % of the run
+    // (the paper's success criterion asks for the first 95 %).
+    std::size_t streak_start = app.steps.size();
+    while (streak_start > 0 && converged(app.steps[streak_start - 1], sc.groundtruth[streak_start - 1]))
+        --streak_start;
+    ASSERT_LT(streak_start, app.steps.size());
+    const double t_conv = sc.groundtruth[streak_start].t_s - sc.groundtruth.front().t_s;
+    EXPECT_LE(t_conv, 0.6 * sc.duration_s) << "converged at " << t_conv << " s of " << sc.duration_s << " s";
+    // Before any update the particles are spread over the whole floor plan: not converged.
+    EXPECT_FALSE(converged(app.steps.front(), sc.groundtruth.front()));
+    EXPECT_GT(app.steps.front().cov(0, 0), 1.0);
+
+    // Outputs: one TUM line per frame with the frame times, steps.csv with a header, PNG, particles.
+    const auto tum = simp::io::readTum(out + "/estimate.tum");
+    ASSERT_EQ(tum.size(), sc.groundtruth.size());
+    for (std::size_t i = 0; i < tum.size(); ++i) EXPECT_NEAR(tum[i].t_s, sc.groundtruth[i].t_s, 1e-6);
+    EXPECT_EQ(lineCount(out + "/steps.csv"), sc.groundtruth.size() + 1);
+    EXPECT_EQ(slurp(out + "/steps.csv").substr(0, stepsCsvHeader().size()), stepsCsvHeader());
+    EXPECT_EQ(lineCount(out + "/final_particles.txt"), app.final_particles.size());
+    EXPECT_GT(fs::file_size(out + "/trajectory.png"), 1000u);
+    // A converged set is concentrated: its spread is well below the room size.
+    EXPECT_LT(std::sqrt(last.cov(0, 0) + last.cov(1, 1)), 0.5);
+}
+
+TEST(LocalizeApp, BaselinesRunEndToEnd) {
+    const Scenario& sc = sharedScenario();
+    for (const std::string method : {"edt", "d", "o"}) {
+        const std::string out = freshOutputDir("baseline_" + method);
+        auto args = baseArgs(sc, out);
+        args.insert(args.end(), {"--method", method});
+        LocalizeApp app;
+        runApp(app, args);
+        EXPECT_EQ(app.sensor_model_used, method);
+        EXPECT_EQ(simp::io::readTum(out + "/estimate.tum").size(), sc.groundtruth.size()) << method;
+        EXPECT_EQ(lineCount(out + "/steps.csv"), sc.groundtruth.size() + 1) << method;
+    }
+}
+
+TEST(LocalizeApp, BaselineConfigFilesSelectTheirModel) {
+    const Scenario& sc = sharedScenario();
+    for (const std::string method : {"simp", "edt", "d", "o"}) {
+        const std::string out = freshOutputDir("ini_" + method);
+        LocalizeApp app;
+        app.initialize(std::vector<std::string>{"simp-localize", "--world", sc.world_dir, "--rawlog", sc.rawlog_path,
+                                                "--out", out, "--quiet", "--config",
+                                                std::string(SIMP_SOURCE_DIR) + "/config_ini/" + method + ".ini"});
+        EXPECT_EQ(app.experiment.particles_count, 5000u) << method;  // the paper's particle count
+        app.experiment.particles_count = 200;                        // keep the test fast
+        app.run();
+        EXPECT_EQ(app.sensor_model_used, method);
+    }
+}
+
+TEST(LocalizeApp, SameSeedGivesIdenticalEstimate) {
+    const Scenario& sc = sharedScenario();
+    const std::string a = freshOutputDir("seed_a"), b = freshOutputDir("seed_b"), c = freshOutputDir("seed_c");
+    auto args_a = baseArgs(sc, a), args_b = baseArgs(sc, b), args_c = baseArgs(sc, c);
+    for (auto* args : {&args_a, &args_b, &args_c}) args->insert(args->end(), {"--particles", "500"});
+    args_c.insert(args_c.end(), {"--seed", "4"});
+    LocalizeApp app_a, app_b, app_c;
+    runApp(app_a, args_a);
+    runApp(app_b, args_b);
+    runApp(app_c, args_c);
+    EXPECT_EQ(slurp(a + "/estimate.tum"), slurp(b + "/estimate.tum"));
+    EXPECT_EQ(slurp(a + "/final_particles.txt"), slurp(b + "/final_particles.txt"));
+    EXPECT_NE(slurp(a + "/final_particles.txt"), slurp(c + "/final_particles.txt"));
+}
+
+TEST(LocalizeApp, ObservationOnlyRawlogGivesTheSameFrames) {
+    const Scenario& sc = sharedScenario();
+    const std::string out = freshOutputDir("obs_only");
+    auto args = baseArgs(sc, out);
+    args[3] = sc.rawlog_obs_only_path;
+    args.insert(args.end(), {"--particles", "500"});
+    LocalizeApp app;
+    runApp(app, args);
+    ASSERT_EQ(app.steps.size(), sc.groundtruth.size());
+    for (std::size_t i = 0; i < app.steps.size(); ++i) EXPECT_NEAR(app.steps[i].t_s, sc.groundtruth[i].t_s, 1e-6);
+}
+
+TEST(LocalizeApp, HelpDoesNothingAndSucceeds) {
+    LocalizeApp app;
+    testing::internal::CaptureStdout();
+    app.initialize(std::vector<std::string>{"simp-localize", "--help"});
+    const std::string text = testing::internal::GetCapturedStdout();
+    EXPECT_TRUE(app.help_requested);
+    EXPECT_NE(text.find("--rawlog"), std::string::npos);
+    EXPECT_NO_THROW(app.run());
+}
+
+TEST(LocalizeApp, BadInputsNameTheFile) {
+    const Scenario& sc = sharedScenario();
+    const std::string out = freshOutputDir("errors");
+    fs::create_directories(out);
+
+    // Missing rawlog.
+    auto args = baseArgs(sc, out);
+    args[3] = out + "/nope.rawlog";
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, args); }).find("nope.rawlog"), std::string::npos);
+
+    // Truncated rawlog: a real one cut in the middle of an entry.
+    const std::string truncated = out + "/truncated.rawlog";
+    {
+        const std::string all = slurp(sc.rawlog_path);
+        std::ofstream f(truncated, std::ios::binary);
+        f.write(all.data(), static_cast<std::streamsize>(all.size() * 2 / 3));
+    }
+    args = baseArgs(sc, out);
+    args[3] = truncated;
+    const std::string trunc_err = errorOf([&] { LocalizeApp app; runApp(app, args); });
+    EXPECT_NE(trunc_err.find("truncated.rawlog"), std::string::npos) << trunc_err;
+    EXPECT_NE(trunc_err.find("entry"), std::string::npos) << trunc_err;
+
+    // Missing world directory, and a world directory without its files.
+    args = baseArgs(sc, out);
+    args[1] = out + "/no_world";
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, args); }).find("no_world"), std::string::npos);
+    fs::create_directories(out + "/empty_world");
+    args[1] = out + "/empty_world";
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, args); }).find("empty_world"), std::string::npos);
+
+    // Unknown --method.
+    args = baseArgs(sc, out);
+    args.insert(args.end(), {"--method", "lidar"});
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, args); }).find("lidar"), std::string::npos);
+
+    // An .ini key the project does not know, and a bad value: both name the file and the key.
+    const std::string bad_ini = out + "/bad.ini";
+    std::ofstream(bad_ini) << "[LocalizationExperiment]\nparticle_count = 100\n";
+    args = baseArgs(sc, out);
+    args[7] = bad_ini;
+    std::string err = errorOf([&] { LocalizeApp app; runApp(app, args); });
+    EXPECT_NE(err.find("bad.ini"), std::string::npos) << err;
+    EXPECT_NE(err.find("particle_count"), std::string::npos) << err;
+    std::ofstream(bad_ini) << "[MotionModel]\na1 = fast\n";
+    err = errorOf([&] { LocalizeApp app; runApp(app, args); });
+    EXPECT_NE(err.find("bad.ini"), std::string::npos) << err;
+    EXPECT_NE(err.find("a1"), std::string::npos) << err;
+
+    // Missing .ini, missing required argument.
+    args = baseArgs(sc, out);
+    args[7] = out + "/missing.ini";
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, args); }).find("missing.ini"), std::string::npos);
+    EXPECT_NE(errorOf([&] { LocalizeApp app; runApp(app, {"--world", sc.world_dir}); }).find("rawlog"),
+              std::string::npos);
+}

@@ -1,0 +1,85 @@
+/// The project's .ini keys: defaults, validation, the paper's motion model.
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/localization/LocalizeOptions.h>
+
+using namespace simp::localization;
+
+TEST(LocalizeOptions, DefaultsAreThePapers) {
+    const ExperimentOptions e;
+    EXPECT_EQ(e.particles_count, 5000u);
+    EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.10);
+    EXPECT_DOUBLE_EQ(e.update_min_d_phi, 0.03);
+    const auto m = MotionModelOptions::paperDefaults();
+    EXPECT_EQ(m.modelSelection, mrpt::obs::CActionRobotMovement2D::mmGaussian);
+    EXPECT_DOUBLE_EQ(m.gaussianModel.a1, 0.15);
+    EXPECT_DOUBLE_EQ(m.gaussianModel.a4, 0.15);
+}
+
+TEST(LocalizeOptions, MotionModelGivesTheNoiseOfTheIncrement) {
+    // sigma = minStd + 0.15 * |motion|: a 1 m straight move has sigma_x = 0.01 + 0.15 m.
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(1, 0, 0), MotionModelOptions::paperDefaults());
+    mrpt::math::CMatrixDouble33 cov;
+    mrpt::poses::CPose2D mean;
+    mv.poseChange->getCovarianceAndMean(cov, mean);
+    EXPECT_NEAR(std::sqrt(cov(0, 0)), 0.16, 1e-9);
+    EXPECT_NEAR(std::sqrt(cov(2, 2)), 0.01, 1e-9);
+    // A pure 1 rad turn: sigma_phi = 0.01 + 0.15 rad.
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0, 0, 1), MotionModelOptions::paperDefaults());
+    mv.poseChange->getCovarianceAndMean(cov, mean);
+    EXPECT_NEAR(std::sqrt(cov(2, 2)), 0.16, 1e-9);
+}
+
+TEST(LocalizeOptions, LoadsEveryKey) {
+    mrpt::config::CConfigFileMemory cfg(
+        "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
+        "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
+        "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n");
+    validateIniKeys(cfg, "x.ini");
+    ExperimentOptions e;
+    e.loadFromConfigFile(cfg, "LocalizationExperiment");
+    EXPECT_EQ(e.particles_count, 123u);
+    EXPECT_EQ(e.seed, 9u);
+    EXPECT_EQ(e.sensor_model, "d");
+    EXPECT_DOUBLE_EQ(e.free_cells_threshold, 0.6);
+    EXPECT_FALSE(e.prune_outside_free_space);
+    EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.2);
+    EXPECT_EQ(e.estimate_mode, EstimateMode::Mean);
+    MotionModelOptions m;
+    m.loadFromConfigFile(cfg, "MotionModel");
+    EXPECT_EQ(m.mrpt_options.modelSelection, mrpt::obs::CActionRobotMovement2D::mmThrun);
+    EXPECT_FLOAT_EQ(m.mrpt_options.thrunModel.alfa1_rot_rot, 0.2f);
+    EXPECT_DOUBLE_EQ(m.mrpt_options.gaussianModel.a1, 0.3);
+}
+
+TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
+    auto message = [](const std::string& ini) {
+        mrpt::config::CConfigFileMemory cfg(ini);
+        try {
+            validateIniKeys(cfg, "my.ini");
+            ExperimentOptions e;
+            e.loadFromConfigFile(cfg, "LocalizationExperiment");
+            MotionModelOptions m;
+            m.loadFromConfigFile(cfg, "MotionModel");
+        } catch (const std::exception& ex) {
+            return std::string(ex.what());
+        }
+        return std::string();
+    };
+    std::string m = message("[LocalizationExperiment]\nparticle=5\n");
+    EXPECT_NE(m.find("my.ini"), std::string::npos);
+    EXPECT_NE(m.find("'particle'"), std::string::npos);
+    EXPECT_NE(message("[PF_options]\nBETTA=0.5\n").find("BETTA"), std::string::npos);
+    EXPECT_NE(message("[KLD_options]\nKLD_size=1\n").find("KLD_size"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=-3\n").find("particles_count"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=12.5\n").find("particles_count"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nseed=abc\n").find("seed"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nsensor_model=lidar\n").find("lidar"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nestimate_mode=median\n").find("estimate_mode"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nupdate_min_d_xy=nan\n").find("update_min_d_xy"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nprune_outside_free_space=maybe\n").find("prune"), std::string::npos);
+    EXPECT_NE(message("[MotionModel]\nmodelSelection=magic\n").find("modelSelection"), std::string::npos);
+    EXPECT_EQ(message("[LocalizationExperiment]\nparticles_count=10\n"), "");
+}
