@@ -92,7 +92,7 @@ int StatsApp::run(std::ostream& out) {
         }
         NoiseFit f = fitGaussian(s, options.outlier_mahalanobis);
         const double sigma_max = std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(f.model.cov_m2).eigenvalues()(1));
-        const double half = options.plot_half_extent_m > 0 ? options.plot_half_extent_m : std::max(0.5, 3.5 * sigma_max);
+        const double half = options.plot_half_extent_m > 0 ? options.plot_half_extent_m : std::max(0.5, 4.0 * sigma_max);
         const Histogram2D h = makeHistogram(s, options.cell_size_m, f.model.mean_m, half);
         if (options.fit_source == "histogram") f = fitGaussianFromHistogram(h);
         std::string file = class_names[c];

@@ -16,7 +16,7 @@ struct StatsOptions {
     std::string fit_source = "samples"; ///< "samples" (exact ML fit) or "histogram" (cells + Sheppard)
     double outlier_mahalanobis = 0.0;   ///< > 0: robust fit, reject beyond this Mahalanobis radius
     int min_samples = 10;               ///< classes with fewer matched samples are not modelled
-    double plot_half_extent_m = 0.0;    ///< PNG half width (m); 0 = 3.5 sigma around mu, at least 0.5 m
+    double plot_half_extent_m = 0.0;    ///< PNG half width (m); 0 = 4 sigma around mu, at least 0.5 m
     int plot_pixels_per_cell = 8;       ///< PNG scale
 
     /// Reads [section]; missing keys keep their defaults.
