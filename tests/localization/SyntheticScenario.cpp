@@ -22,6 +22,8 @@ constexpr double kRes = 0.05;
 constexpr double kT0 = 1000.0;       // s (t = 0 would be MRPT's invalid timestamp)
 constexpr double kFrameDt = 0.2;     // s, 5 Hz
 constexpr double kSpeed = 0.45;      // m/s
+constexpr double kMissProbability = 0.15;          // a visible object is not detected
+constexpr double kFalsePositiveProbability = 0.3;  // per camera frame: one detection of nothing
 
 void wallRect(mrpt::maps::COccupancyGridMap2D& g, double x0, double y0, double x1, double y1) {
     for (double x = x0; x <= x1 + 1e-9; x += kRes / 2)
@@ -150,6 +152,7 @@ Scenario makeScenario(const std::string& dir, std::uint32_t seed) {
 
     std::mt19937 rng(seed);
     std::normal_distribution<double> n01(0.0, 1.0);
+    std::uniform_real_distribution<double> uni(0.0, 1.0);
     std::vector<mrpt::poses::CPose3D> cams;
     for (int c = 0; c < 4; ++c) cams.push_back(obs::cameraPoseOnRobot(0.1, 0.0, 0.5, c * M_PI / 2));
 
@@ -197,12 +200,30 @@ Scenario makeScenario(const std::string& dir, std::uint32_t seed) {
                 if (c_cam.z() < 0.3 || c_cam.z() > 7.0) continue;
                 if (std::abs(std::atan2(c_cam.x(), c_cam.z())) > 0.87) continue;  // ~100 deg horizontal FOV
                 if (!lineOfSight(sc.world.floorplan, {path[f].x, path[f].y}, mo.box.center.head<2>())) continue;
+                if (uni(rng) < kMissProbability) continue;
+                // Detector noise: centre (m), size (relative) and yaw (rad), in the world frame.
                 geometry::Box3D noisy = mo.box;
-                noisy.center += Eigen::Vector3d(0.05 * n01(rng), 0.05 * n01(rng), 0.02 * n01(rng));
+                noisy.center += Eigen::Vector3d(0.08 * n01(rng), 0.08 * n01(rng), 0.03 * n01(rng));
+                for (int k = 0; k < 3; ++k) noisy.size[k] *= std::max(0.5, 1.0 + 0.1 * n01(rng));
+                noisy.R = Eigen::AngleAxisd(0.1 * n01(rng), Eigen::Vector3d::UnitZ()).toRotationMatrix() * noisy.R;
                 obs::Detection3D d;
                 d.class_id = static_cast<std::uint16_t>(mo.class_id);
                 d.confidence = 0.9f;
                 d.box_in_camera = noisy.transformed(T_cw);
+                o->addDetection(d);
+            }
+            if (uni(rng) < kFalsePositiveProbability) {
+                // A detection of a random map class where there is no object, in front of the camera.
+                const auto& objs = sc.world.objects.objects;
+                const int cls = objs[static_cast<std::size_t>(uni(rng) * objs.size()) % objs.size()].class_id;
+                const double depth = 1.0 + 4.0 * uni(rng), lateral = (uni(rng) - 0.5) * depth;
+                geometry::Box3D fp;
+                fp.center = Eigen::Vector3d(lateral, 0.0, depth);
+                fp.size = Eigen::Vector3d(0.6, 0.8, 0.6);
+                obs::Detection3D d;
+                d.class_id = static_cast<std::uint16_t>(cls);
+                d.confidence = 0.9f;
+                d.box_in_camera = fp;
                 o->addDetection(d);
             }
             sf.insert(o);

@@ -1,8 +1,9 @@
 #pragma once
 /// \file SyntheticScenario.h
 /// A small world and a short sequence generated in the tests: a 14 m x 9 m floor plan with
-/// four rooms, 20 objects of 8 classes, a 4-camera rig (360 deg) seeing them with small noise,
-/// noisy odometry. Written as a world directory and a real .rawlog.
+/// four rooms, 20 objects of 8 classes, a 4-camera rig (360 deg) seeing them with detector
+/// noise (centre 8 cm, size 10 %, yaw 0.1 rad), 15 % missed detections and false positives
+/// (30 % of the camera frames), 3 % odometry noise. Written as a world directory and a real .rawlog.
 
 #include <mrpt/math/TPose2D.h>
 #include <simp/io/Tum.h>

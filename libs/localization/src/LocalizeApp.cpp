@@ -22,6 +22,7 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace simp::localization {
 namespace {
@@ -99,9 +100,9 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
         "Writes OUT/estimate.tum, OUT/steps.csv, OUT/final_particles.txt, OUT/trajectory.png. "
         "See doc/localization.md.",
         ' ', "0.1");
-    TCLAP::ValueArg<std::string> a_world("", "world", "world directory (floorplan.yaml, objects.json)", true, "", "W", cmd);
-    TCLAP::ValueArg<std::string> a_rawlog("", "rawlog", "input rawlog (Q/sequence.rawlog)", true, "", "RAWLOG", cmd);
-    TCLAP::ValueArg<std::string> a_out("", "out", "output directory", true, "", "O", cmd);
+    TCLAP::ValueArg<std::string> a_world("", "world", "world directory (floorplan.yaml, objects.json); required", false, "", "W", cmd);
+    TCLAP::ValueArg<std::string> a_rawlog("", "rawlog", "input rawlog (Q/sequence.rawlog); required", false, "", "RAWLOG", cmd);
+    TCLAP::ValueArg<std::string> a_out("", "out", "output directory; required", false, "", "O", cmd);
     TCLAP::ValueArg<std::string> a_config("", "config", "MRPT-style .ini (config_ini/simp.ini)", false, "", "INI", cmd);
     TCLAP::ValueArg<std::string> a_method("", "method", "sensor model: simp|edt|d|o (overrides the .ini)", false, "",
                                           "M", cmd);
@@ -120,6 +121,8 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
         help_requested = true;  // --help / --version printed the text
         return;
     }
+    for (const auto* a : {&a_world, &a_rawlog, &a_out})
+        if (!a->isSet()) throw std::invalid_argument("simp-localize: missing required option --" + a->getName() + "; see --help");
     world_dir = a_world.getValue();
     rawlog_path = a_rawlog.getValue();
     out_dir = a_out.getValue();
@@ -206,6 +209,7 @@ void LocalizeApp::run() {
     mrpt::poses::CPose2D pending;  // odometry not yet applied to the particles
     const auto t_start = Clock::now();
     auto t_last_progress = t_start;
+    const bool tty = isatty(fileno(stderr)) != 0;  // \r-updated line on a terminal, lines otherwise
     for (std::size_t f = 0; f < seq.frames.size(); ++f) {
         const auto t0 = Clock::now();
         const SequenceFrame& frame = seq.frames[f];
@@ -241,14 +245,16 @@ void LocalizeApp::run() {
         steps.push_back(rec);
         estimate.push_back({rec.t_s, rec.estimate});
 
-        if (show_progress && (secondsSince(t_last_progress) > 0.5 || f + 1 == seq.frames.size())) {
+        const bool last_frame = f + 1 == seq.frames.size();
+        if (show_progress && (secondsSince(t_last_progress) > (tty ? 0.5 : 5.0) || last_frame)) {
             t_last_progress = Clock::now();
             const double el = secondsSince(t_start);
             char line[160];
-            std::snprintf(line, sizeof(line), "\rsimp-localize: %5.1f%% (%zu/%zu frames, %.1f frames/s, K=%zu)  ",
+            std::snprintf(line, sizeof(line), "%ssimp-localize: %5.1f%% (%zu/%zu frames, %.1f frames/s, K=%zu)  ",
+                          tty ? "\r" : "",
                           100.0 * (f + 1) / seq.frames.size(), f + 1, seq.frames.size(), (f + 1) / std::max(el, 1e-9),
                           rec.detections);
-            std::cerr << line << (f + 1 == seq.frames.size() ? "\n" : "") << std::flush;
+            std::cerr << line << (last_frame || !tty ? "\n" : "") << std::flush;
         }
     }
 
