@@ -2,7 +2,7 @@
 /// \file Box3D.h
 /// An oriented 3D box: the shape of a detection and of a map object.
 ///
-/// Conventions (doc/geometry.md):
+/// Conventions (doc/conventions.md; algorithms in doc/geometry.md):
 ///  - `center` is the box centre in the frame the box is expressed in (m).
 ///  - `size` = (W, H, L): extents along the box's own x, y, z axes (m), as the
 ///    Omni3D / Cube R-CNN `dimensions` field.
