@@ -1,0 +1,66 @@
+/// \file CameraFrames.cpp
+#include "JsonUtil.h"
+
+#include <simp/labels/CameraFrames.h>
+
+#include <set>
+
+namespace simp::labels {
+
+std::vector<PosedImage> readCameraFrames(const std::string& path) {
+    const detail::json j = detail::readJsonFile(path);
+    const detail::json& ims = detail::require(j, "images", path, "images");
+    if (!ims.is_array()) detail::fail(path, "images", "expected a list of images");
+    std::vector<PosedImage> out;
+    std::set<std::int64_t> ids;
+    for (std::size_t i = 0; i < ims.size(); ++i) {
+        const std::string k = "images[" + std::to_string(i) + "]";
+        const detail::json& o = ims[i];
+        PosedImage im;
+        im.id = detail::integer(detail::require(o, "id", path, k + ".id"), path, k + ".id");
+        if (!ids.insert(im.id).second) detail::fail(path, k + ".id", "duplicate image id " + std::to_string(im.id));
+        im.file_path = detail::text(detail::require(o, "file_path", path, k + ".file_path"), path, k + ".file_path");
+        if (o.contains("timestamp")) im.timestamp_s = detail::number(o["timestamp"], path, k + ".timestamp");
+        im.width = static_cast<int>(detail::integer(detail::require(o, "width", path, k + ".width"), path, k + ".width"));
+        im.height = static_cast<int>(detail::integer(detail::require(o, "height", path, k + ".height"), path, k + ".height"));
+        if (im.width <= 0 || im.height <= 0) detail::fail(path, k + ".width/height", "must be > 0 px");
+        im.K = detail::matrix3(detail::require(o, "K", path, k + ".K"), path, k + ".K");
+        if (!(im.K(0, 0) > 0) || !(im.K(1, 1) > 0) || im.K(1, 0) != 0 || im.K(2, 0) != 0 || im.K(2, 1) != 0 || im.K(2, 2) != 1)
+            detail::fail(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
+        const auto p = detail::numbers(detail::require(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
+        Eigen::Matrix3d R;
+        if (o.contains("quaternion_wxyz")) {
+            const auto q = detail::numbers(o["quaternion_wxyz"], 4, path, k + ".quaternion_wxyz");
+            const Eigen::Quaterniond quat(q[0], q[1], q[2], q[3]);
+            if (std::abs(quat.norm() - 1.0) > 1e-6) detail::fail(path, k + ".quaternion_wxyz", "not a unit quaternion");
+            R = quat.normalized().toRotationMatrix();
+        } else {
+            R = detail::matrix3(detail::require(o, "rotation", path, k + ".rotation"), path, k + ".rotation");
+            if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
+                detail::fail(path, k + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
+        }
+        im.world_T_camera.linear() = R;
+        im.world_T_camera.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+        out.push_back(im);
+    }
+    return out;
+}
+
+void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& images) {
+    nlohmann::ordered_json ims = nlohmann::ordered_json::array();
+    for (const PosedImage& im : images) {
+        nlohmann::ordered_json o;
+        o["id"] = im.id;
+        o["file_path"] = im.file_path;
+        o["timestamp"] = im.timestamp_s;
+        o["width"] = im.width;
+        o["height"] = im.height;
+        o["K"] = detail::toJson(im.K);
+        o["position_m"] = detail::toJson(Eigen::Vector3d(im.world_T_camera.translation()));
+        o["rotation"] = detail::toJson(Eigen::Matrix3d(im.world_T_camera.linear()));
+        ims.push_back(o);
+    }
+    detail::writeJsonFile(nlohmann::ordered_json{{"images", ims}}, path);
+}
+
+}  // namespace simp::labels

@@ -1,0 +1,124 @@
+/// \file LabelGenerator.cpp
+#include <simp/geometry/Hungarian.h>
+#include <simp/labels/LabelGenerator.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace simp::labels {
+
+void LabelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    MRPT_LOAD_CONFIG_VAR(iou_threshold, double, cfg, s);
+    MRPT_LOAD_CONFIG_VAR(keep_unmatched, bool, cfg, s);
+    MRPT_LOAD_CONFIG_VAR(max_truncation, double, cfg, s);
+    MRPT_LOAD_CONFIG_VAR(near_m, double, cfg, s);
+    visibility.pixel_step = cfg.read_int(s, "visibility_pixel_step", visibility.pixel_step);
+    visibility.occupied_threshold = cfg.read_double(s, "visibility_occupied_threshold", visibility.occupied_threshold);
+    visibility.ignore_object_cells = cfg.read_bool(s, "visibility_ignore_object_cells", visibility.ignore_object_cells);
+    visibility.max_range_m = cfg.read_double(s, "visibility_max_range_m", visibility.max_range_m);
+    validate();
+}
+
+void LabelOptions::validate() const {
+    const auto bad = [](const std::string& k, const std::string& w) { throw std::invalid_argument("[simp-labels] " + k + ": " + w); };
+    if (!(iou_threshold > 0 && iou_threshold <= 1)) bad("iou_threshold", "must be in (0, 1]");
+    if (!(max_truncation >= 0 && max_truncation <= 1)) bad("max_truncation", "must be in [0, 1]");
+    if (!(near_m > 0)) bad("near_m", "must be > 0 (m)");
+    if (visibility.pixel_step < 1) bad("visibility_pixel_step", "must be >= 1 px");
+    if (!(visibility.occupied_threshold > 0 && visibility.occupied_threshold <= 1))
+        bad("visibility_occupied_threshold", "must be in (0, 1]");
+    if (!(visibility.max_range_m > 0)) bad("visibility_max_range_m", "must be > 0 (m)");
+}
+
+void LabelOptions::dumpToTextStream(std::ostream& out) const {
+    out << "[simp-labels]\n"
+        << "iou_threshold = " << iou_threshold << "\nkeep_unmatched = " << keep_unmatched
+        << "\nmax_truncation = " << max_truncation << "\nnear_m = " << near_m
+        << "\nvisibility_pixel_step = " << visibility.pixel_step
+        << "\nvisibility_occupied_threshold = " << visibility.occupied_threshold
+        << "\nvisibility_ignore_object_cells = " << visibility.ignore_object_cells
+        << "\nvisibility_max_range_m = " << visibility.max_range_m << "\n";
+}
+
+geometry::Box3D boxInCameraOmni3D(const PosedImage& image, const geometry::Box3D& box_world) {
+    const geometry::Box3D up = geometry::canonicalizeUpright(box_world);
+    Eigen::Matrix3d R_world_local;  // columns: local x = object x, local y = down, local z = object y
+    R_world_local << up.R.col(0), -up.R.col(2), up.R.col(1);
+    const Eigen::Isometry3d camera_T_world = image.world_T_camera.inverse();
+    geometry::Box3D b;
+    b.center = camera_T_world * up.center;
+    b.R = camera_T_world.linear() * R_world_local;
+    b.size = Eigen::Vector3d(up.size.x(), up.size.z(), up.size.y());
+    return b;
+}
+
+LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccupancyGridMap2D* floorplan,
+                        const std::vector<PosedImage>& images, const std::vector<Detection2D>& detections,
+                        const LabelOptions& options) {
+    options.validate();
+    LabelSet out;
+    out.categories = gt.class_names;
+    out.images = images;
+    std::map<std::int64_t, std::vector<const Detection2D*>> by_image;
+    for (const Detection2D& d : detections) by_image[d.image_id].push_back(&d);
+    std::map<std::int64_t, bool> known;
+    for (const PosedImage& im : images) known[im.id] = true;
+    for (const auto& [id, dets] : by_image)
+        if (!known.count(id)) out.detections_unknown_image += dets.size();
+
+    std::vector<geometry::Box3D> boxes;
+    for (const auto& o : gt.objects) boxes.push_back(o.box);
+    for (const PosedImage& im : images) {
+        std::vector<ProjectedBox> proj(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) proj[i] = projectBox(im, boxes[i], options.near_m);
+        const std::vector<double> vis = computeVisibility(im, boxes, floorplan, options.visibility);
+        const auto& dets = by_image[im.id];
+        std::vector<int> match_of_object(boxes.size(), -1);
+        // Per class: Hungarian assignment on 1 - IoU(bbox2D_trunc, detection), accepted above the threshold.
+        for (std::size_t c = 0; c < gt.class_names.size(); ++c) {
+            std::vector<std::size_t> objs, ds;
+            for (std::size_t i = 0; i < boxes.size(); ++i)
+                if (gt.objects[i].class_id == static_cast<int>(c) && proj[i].visible_in_front &&
+                    proj[i].truncation <= options.max_truncation && area(proj[i].bbox_trunc) > 0)
+                    objs.push_back(i);
+            for (std::size_t k = 0; k < dets.size(); ++k)
+                if (dets[k]->class_name == gt.class_names[c]) ds.push_back(k);
+            if (objs.empty() || ds.empty()) continue;
+            Eigen::MatrixXd cost(static_cast<Eigen::Index>(objs.size()), static_cast<Eigen::Index>(ds.size()));
+            for (std::size_t a = 0; a < objs.size(); ++a)
+                for (std::size_t b = 0; b < ds.size(); ++b) {
+                    const Detection2D& d = *dets[ds[b]];
+                    cost(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
+                        1.0 - iou2D(proj[objs[a]].bbox_trunc, ImageBox(d.x_min, d.y_min, d.x_max, d.y_max));
+                }
+            const std::vector<int> assignment = geometry::solveAssignment(cost);
+            for (std::size_t a = 0; a < objs.size(); ++a)
+                if (assignment[a] >= 0 &&
+                    1.0 - cost(static_cast<Eigen::Index>(a), assignment[a]) >= options.iou_threshold)
+                    match_of_object[objs[a]] = static_cast<int>(ds[static_cast<std::size_t>(assignment[a])]);
+        }
+        std::vector<char> used(dets.size(), 0);
+        for (std::size_t i = 0; i < boxes.size(); ++i) {
+            const bool matched = match_of_object[i] >= 0;
+            if (matched) used[static_cast<std::size_t>(match_of_object[i])] = 1;
+            if (!matched && !(options.keep_unmatched && proj[i].visible_in_front && proj[i].truncation <= options.max_truncation &&
+                              area(proj[i].bbox_trunc) > 0))
+                continue;
+            LabelAnnotation a;
+            a.id = static_cast<std::int64_t>(out.annotations.size());
+            a.image_id = im.id;
+            a.category_id = gt.objects[i].class_id;
+            a.object_id = gt.objects[i].id;
+            a.box_cam = boxInCameraOmni3D(im, boxes[i]);
+            a.projection = proj[i];
+            if (matched) a.detection = *dets[static_cast<std::size_t>(match_of_object[i])];
+            a.visibility = vis[i];
+            out.annotations.push_back(a);
+        }
+        for (char u : used) out.detections_unmatched += u ? 0 : 1;
+    }
+    return out;
+}
+
+}  // namespace simp::labels

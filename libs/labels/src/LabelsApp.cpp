@@ -1,0 +1,65 @@
+/// \file LabelsApp.cpp
+#include <mrpt/config/CConfigFile.h>
+#include <simp/labels/LabelsApp.h>
+#include <simp/labels/ToolArgs.h>
+#include <simp/world/World.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace simp::labels {
+
+namespace fs = std::filesystem;
+
+std::string LabelsApp::usage() {
+    return "Usage: simp-labels --world W --frames FRAMES.json --detections2d DET.csv|DET.json --out labels.json\n"
+           "                   [--config INI] [--iou T]\n"
+           "Projects the world's boxes into each posed image (Eq. reprojection), computes truncation and\n"
+           "visibility (boxes z-buffer + floor-plan walls), matches 2D detections by class and 2D IoU and\n"
+           "writes Omni3D JSON for Cube R-CNN (doc/labels.md). --world: a world directory (walls used) or an\n"
+           "objects.json file (no walls).\n";
+}
+
+bool LabelsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
+    const ToolArgs a = parseToolArgs(argc, argv, {"world", "frames", "detections2d", "out"}, {"config", "iou"});
+    if (a.help) {
+        out << usage();
+        return false;
+    }
+    world_path = a.get("world"), frames_path = a.get("frames"), detections_path = a.get("detections2d");
+    out_path = a.get("out");
+    if (a.has("config")) {
+        config_path = a.get("config");
+        if (!fs::exists(config_path)) throw std::invalid_argument(config_path + ": config file not found");
+        options.loadFromConfigFile(mrpt::config::CConfigFile(config_path), "simp-labels");
+    }
+    if (a.has("iou")) {
+        const std::string v = a.get("iou");
+        char* end = nullptr;
+        options.iou_threshold = std::strtod(v.c_str(), &end);
+        if (v.empty() || *end != '\0') throw std::invalid_argument("--iou: expected a number in (0, 1], got '" + v + "'");
+    }
+    options.validate();
+    return true;
+}
+
+int LabelsApp::run(std::ostream& out) {
+    options.dumpToTextStream(out);
+    world::World w;
+    const bool has_walls = fs::is_directory(world_path);
+    if (has_walls)
+        w = world::loadWorld(world_path);
+    else
+        w.objects = world::loadObjectMap(world_path);
+    const auto images = readCameraFrames(frames_path);
+    const auto dets = readDetections2D(detections_path, w.objects.class_names);
+    out << images.size() << " images, " << dets.size() << " 2D detections, " << w.objects.objects.size()
+        << " ground-truth objects" << (has_walls ? "" : " (no floor plan: walls ignored)") << "\n";
+    result = generateLabels(w.objects, has_walls ? &w.floorplan : nullptr, images, dets, options);
+    writeOmni3DLabels(out_path, result);
+    out << "wrote " << out_path << ": " << result.annotations.size() << " annotations; " << result.detections_unmatched
+        << " 2D detections without a 3D box, " << result.detections_unknown_image << " with an unknown image id\n";
+    return 0;
+}
+
+}  // namespace simp::labels
