@@ -105,6 +105,15 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_cost", tau_cost);
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
+    {
+        int merge = merge_duplicates ? 1 : 0;
+        const std::string text = trim(c.read_string(s, "merge_duplicates", "", false));
+        if (text == "true" || text == "1") merge = 1;
+        else if (text == "false" || text == "0") merge = 0;
+        else if (!text.empty())
+            throw std::invalid_argument("mapping option [" + s + "] merge_duplicates = '" + text + "': expected true or false");
+        merge_duplicates = merge != 0;
+    }
     readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
     readDouble(c, s, "truncation_threshold", truncation_threshold);
     readDouble(c, s, "max_occluded_fraction", max_occluded_fraction);
@@ -182,6 +191,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_cost              = " << tau_cost << "\n";
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
+    o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
     o << "truncation_threshold  = " << truncation_threshold << "\n";
     o << "max_occluded_fraction = " << max_occluded_fraction << "\n";

@@ -5,6 +5,7 @@
 #include <simp/mapping/ObjectMapBuilder.h>
 
 #include <algorithm>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -41,6 +42,70 @@ void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room,
     }
 }
 
+void ObjectMapBuilder::mergeLocalDuplicates() {
+    // Greedy: merge the lowest-cost same-class pair while its cost is below tau_cost
+    // (o1 = the object with more detections, Eq. costfunc).
+    for (;;) {
+        double best = m_options.tau_cost;
+        std::size_t bi = 0, bj = 0;
+        for (std::size_t i = 0; i < m_local.size(); ++i)
+            for (std::size_t j = i + 1; j < m_local.size(); ++j) {
+                if (m_local[i].class_id != m_local[j].class_id) continue;
+                const bool i_ref = m_local[i].n_match >= m_local[j].n_match;
+                const LocalObject& a = i_ref ? m_local[i] : m_local[j];
+                const LocalObject& b = i_ref ? m_local[j] : m_local[i];
+                const double c = associationCost(a.box, noiseOfClass(a.class_id), b.box);
+                if (c < best) best = c, bi = i, bj = j;
+            }
+        if (best >= m_options.tau_cost) return;
+        LocalObject& keep = m_local[bi].n_match >= m_local[bj].n_match ? m_local[bi] : m_local[bj];
+        const LocalObject& drop = &keep == &m_local[bi] ? m_local[bj] : m_local[bi];
+        keep.box = mergeBoxes(keep.box, keep.n_match, drop.box, drop.n_match);
+        keep.n_match += drop.n_match;
+        m_local.erase(m_local.begin() + static_cast<std::ptrdiff_t>(&drop == &m_local[bi] ? bi : bj));
+    }
+}
+
+std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& ids) {
+    std::vector<std::size_t> idx;
+    for (std::size_t k = 0; k < m_g.objects.size(); ++k)
+        if (ids.count(m_g.objects[k].id)) idx.push_back(k);
+    std::vector<bool> removed(m_g.objects.size(), false);
+    std::size_t n_removed = 0;
+    for (;;) {
+        double best = m_options.tau_cost;
+        std::size_t keep = 0, drop = 0;
+        for (std::size_t a = 0; a < idx.size(); ++a)
+            for (std::size_t b = a + 1; b < idx.size(); ++b) {
+                const std::size_t i = idx[a], j = idx[b];
+                if (removed[i] || removed[j] || m_g.objects[i].class_id != m_g.objects[j].class_id) continue;
+                const std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
+                const std::size_t o = r == i ? j : i;
+                const auto noise = m_g.noiseOf(m_g.objects[r]);
+                const double c = associationCost(m_g.objects[r].box,
+                                                 noise && noise->isValid() ? *noise : noiseOfClass(m_g.objects[r].class_id),
+                                                 m_g.objects[o].box);
+                if (c < best) best = c, keep = r, drop = o;
+            }
+        if (best >= m_options.tau_cost) break;
+        world::MapObject& k = m_g.objects[keep];
+        const world::MapObject& d = m_g.objects[drop];
+        k.box = mergeBoxes(k.box, k.n_match, d.box, d.n_match);
+        k.n_match += d.n_match;
+        k.n_skip += d.n_skip;
+        k.room_id = roomOf(k.box.center.x(), k.box.center.y());
+        removed[drop] = true;
+        ++n_removed;
+    }
+    if (n_removed > 0) {
+        std::size_t w = 0;
+        for (std::size_t k = 0; k < m_g.objects.size(); ++k)
+            if (!removed[k]) m_g.objects[w++] = m_g.objects[k];
+        m_g.objects.resize(w);
+    }
+    return n_removed;
+}
+
 void ObjectMapBuilder::flush() {
     m_window_start.reset();
     if (m_local.empty() && m_window_active.empty()) {
@@ -48,6 +113,7 @@ void ObjectMapBuilder::flush() {
         return;
     }
     ++m_stats.integrations;
+    if (m_options.merge_duplicates) mergeLocalDuplicates();
 
     std::unordered_map<std::int64_t, std::size_t> index_of;
     for (std::size_t k = 0; k < m_g.objects.size(); ++k) index_of[m_g.objects[k].id] = k;
@@ -116,6 +182,11 @@ void ObjectMapBuilder::flush() {
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
+    if (m_options.merge_duplicates) {
+        std::set<std::int64_t> seen(m_window_candidates.begin(), m_window_candidates.end());
+        for (const auto& o : added) seen.insert(o.id);
+        m_stats.duplicates_merged += mergeMapDuplicates(seen);
+    }
 
     m_local.clear();
     m_window_active.clear();

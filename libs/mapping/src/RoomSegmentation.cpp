@@ -27,7 +27,7 @@ world::RoomMap segmentRooms(const mrpt::maps::COccupancyGridMap2D& grid, const R
 
     // Erode by a disk whose diameter is the door width: openings up to it close.
     const int radius = static_cast<int>(std::ceil(0.5 * p.door_width_m / res));
-    cv::Mat1b eroded = free_space;
+    cv::Mat1b eroded = free_space.clone();
     if (radius > 0) {
         const cv::Mat kernel = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * radius + 1, 2 * radius + 1));
         cv::erode(free_space, eroded, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));

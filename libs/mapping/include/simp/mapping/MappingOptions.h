@@ -38,6 +38,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double tau_cost = 0.3;           ///< merge when C < tau_cost; authors' costTH
     double tau_purge = 0.5;          ///< purge when n_match / n_skip < tau_purge (empirical, paper)
     int min_local_detections = 1;    ///< a local object needs this many detections to be integrated; authors' totalSeenTH
+    /// Project addition: after each integration, pairs of same-class objects (of the local map,
+    /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
+    /// merged, so that duplicates made by early noisy detections do not persist.
+    bool merge_duplicates = true;
     double default_noise_sigma_m = 0.2;  ///< isotropic sigma (m, b = 2) of C_cen for classes without a noise model
     /// @}
 

@@ -33,6 +33,7 @@ struct BuilderStats {
     std::size_t merged = 0;              ///< local objects merged into map objects
     std::size_t added = 0;               ///< new map objects
     std::size_t purged = 0;              ///< map objects removed (n_match / n_skip < tau_purge)
+    std::size_t duplicates_merged = 0;   ///< map objects merged into another one (merge_duplicates)
 };
 
 /// One object of the short-term local map m^_g.
@@ -88,6 +89,9 @@ class ObjectMapBuilder {
     int mapClassOf(const std::string& name);
     world::NoiseModel noiseOfClass(int class_id) const;
     void insertIntoLocalMap(const std::vector<LocalObject>& detections);
+    void mergeLocalDuplicates();
+    /// Merges duplicates among the map objects with the given ids; returns how many were removed.
+    std::size_t mergeMapDuplicates(const std::set<std::int64_t>& ids);
 
     TOptions m_options;
     world::ObjectMapData m_g;       ///< the global object map m_g

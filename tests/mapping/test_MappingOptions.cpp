@@ -1,0 +1,73 @@
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/mapping/MappingOptions.h>
+
+using namespace simp::mapping;
+
+TEST(MappingOptions, DefaultsAreTheAuthors) {
+    const MappingOptions o;
+    EXPECT_DOUBLE_EQ(o.trigger_dist_m, 0.2);
+    EXPECT_DOUBLE_EQ(o.trigger_angle_rad, 0.1);
+    EXPECT_DOUBLE_EQ(o.tau_cost, 0.3);
+    EXPECT_DOUBLE_EQ(o.truncation_threshold, 0.5);
+    EXPECT_DOUBLE_EQ(o.filterOf("sink").min_confidence, 0.7);
+    EXPECT_DOUBLE_EQ(o.filterOf("board").min_range_m, 1.5);
+    EXPECT_DOUBLE_EQ(o.filterOf("cabinet").max_range_m, 5.0);
+    EXPECT_LE(o.filterOf("door").max_range_m, 0.0);  // not mapped by the authors
+    EXPECT_DOUBLE_EQ(o.filterOf("unknown thing").min_confidence, o.default_filter.min_confidence);
+}
+
+TEST(MappingOptions, LoadsKeysAndPerClassLists) {
+    mrpt::config::CConfigFileMemory ini(
+        "[mapping]\n"
+        "tau_cost = 0.25\n"
+        "trigger_dist_m = 0.1\n"
+        "room_update_policy = all\n"
+        "class_min_confidence = potted plant: 0.5, sofa:0.6\n"
+        "class_max_range_m = lamp:3.5\n");
+    MappingOptions o;
+    o.loadFromConfigFile(ini, "mapping");
+    EXPECT_DOUBLE_EQ(o.tau_cost, 0.25);
+    EXPECT_DOUBLE_EQ(o.trigger_dist_m, 0.1);
+    EXPECT_DOUBLE_EQ(o.trigger_angle_rad, 0.1);  // absent key keeps the default
+    EXPECT_EQ(o.room_policy, RoomUpdatePolicy::All);
+    EXPECT_DOUBLE_EQ(o.filterOf("potted plant").min_confidence, 0.5);
+    EXPECT_DOUBLE_EQ(o.filterOf("potted plant").max_range_m, 4.5);  // other fields kept
+    EXPECT_DOUBLE_EQ(o.filterOf("sofa").min_confidence, 0.6);
+    EXPECT_DOUBLE_EQ(o.filterOf("lamp").max_range_m, 3.5);
+    std::ostringstream dump;
+    o.dumpToTextStream(dump);
+    EXPECT_NE(dump.str().find("tau_cost              = 0.25"), std::string::npos);
+}
+
+TEST(MappingOptions, BadValuesNameTheKey) {
+    auto expectThrowNaming = [](const std::string& text, const std::string& key) {
+        mrpt::config::CConfigFileMemory ini("[mapping]\n" + text + "\n");
+        MappingOptions o;
+        try {
+            o.loadFromConfigFile(ini, "mapping");
+            FAIL() << "no exception for " << text;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+        }
+    };
+    expectThrowNaming("tau_cost = abc", "tau_cost");
+    expectThrowNaming("tau_cost = 2", "tau_cost");
+    expectThrowNaming("trigger_dist_m = nan", "trigger_dist_m");
+    expectThrowNaming("zbuffer_downscale = 2.5", "zbuffer_downscale");
+    expectThrowNaming("room_update_policy = sometimes", "room_update_policy");
+    expectThrowNaming("class_min_confidence = sink 0.7", "class_min_confidence");
+    expectThrowNaming("class_min_confidence = sink:high", "class_min_confidence");
+    expectThrowNaming("class_min_confidence = sink:1.5", "sink");
+}
+
+TEST(MappingOptions, TheShippedIniLoadsAndMatchesTheDefaults) {
+    mrpt::config::CConfigFile ini(std::string(SIMP_SOURCE_DIR) + "/config_ini/mapping.ini");
+    MappingOptions o;
+    o.loadFromConfigFile(ini, "mapping");
+    std::ostringstream a, b;
+    o.dumpToTextStream(a);
+    MappingOptions().dumpToTextStream(b);
+    EXPECT_EQ(a.str(), b.str());
+}

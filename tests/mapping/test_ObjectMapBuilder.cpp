@@ -1,0 +1,210 @@
+#include <gtest/gtest.h>
+#include <simp/geometry/Box3DIoU.h>
+#include <simp/mapping/ObjectMapBuilder.h>
+
+#include "MappingTestScene.h"
+
+using namespace simp::mapping;
+using simp::geometry::makeUprightBox;
+
+namespace {
+
+const std::vector<std::string> kClasses = {"table", "cabinet", "chair"};
+
+simp::world::ObjectMapData emptyMap() {
+    simp::world::ObjectMapData m;
+    m.class_names = kClasses;
+    m.class_noise.resize(kClasses.size());
+    return m;
+}
+
+void insertAll(ObjectMapBuilder& b, const std::vector<simp::obs::CObservationObjects3D>& obs,
+               const mrpt::poses::CPose3D& pose) {
+    for (const auto& o : obs) b.insert(o, pose);
+}
+
+/// The map object of class `cls` closest to `c`, or nullptr.
+const simp::world::MapObject* closest(const simp::world::ObjectMapData& m, int cls, const Eigen::Vector3d& c) {
+    const simp::world::MapObject* best = nullptr;
+    for (const auto& o : m.objects)
+        if (o.class_id == cls && (!best || (o.box.center - c).norm() < (best->box.center - c).norm())) best = &o;
+    return best;
+}
+
+}  // namespace
+
+TEST(ObjectMapBuilder, StaticSceneConvergesToTheTrueBoxes) {
+    const std::vector<test::TrueObject> truth = {
+        {0, makeUprightBox({1.4, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.3)},
+        {1, makeUprightBox({6.6, 1.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)},
+        {2, makeUprightBox({4.0, 5.2, 0.45}, {0.5, 0.5, 0.9}, 0.7)}};
+    ObjectMapBuilder b(test::testOptions());
+    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+    b.setMap(emptyMap());
+    std::mt19937 rng(7);
+    const test::DetectionNoise noise;  // 5 cm centre sigma per axis
+    constexpr int kSteps = 120;
+    for (int s = 0; s < kSteps; ++s) {  // a circle of radius 1.2 m around the room centre
+        const double a = 2.0 * M_PI * s / kSteps;
+        const mrpt::poses::CPose3D pose(4.0 + 1.2 * std::cos(a), 3.0 + 1.2 * std::sin(a), 0, a + M_PI / 2, 0, 0);
+        insertAll(b, test::observe(truth, kClasses, pose, rng, noise), pose);
+    }
+    b.flush();
+    const auto& m = b.map();
+    int confirmed = 0;
+    for (const auto& o : m.objects) confirmed += o.n_match >= 5;
+    EXPECT_EQ(confirmed, static_cast<int>(truth.size()));
+    for (const auto& t : truth) {
+        const auto* o = closest(m, t.class_id, t.box.center);
+        ASSERT_NE(o, nullptr);
+        ASSERT_GE(o->n_match, 20);
+        // The centre is the mean of n_match detections: 3 sigma bound of its horizontal error.
+        const double tol = 3.0 * noise.center_sigma_m * std::sqrt(2.0 / o->n_match);
+        EXPECT_LT((o->box.center - t.box.center).head<2>().norm(), tol) << m.class_names[t.class_id];
+        EXPECT_GT(simp::geometry::iou3D(o->box, t.box), 0.8) << m.class_names[t.class_id];
+        EXPECT_EQ(o->room_id, 1);
+    }
+}
+
+TEST(ObjectMapBuilder, RemovedObjectIsPurged) {
+    auto m0 = emptyMap();
+    simp::world::MapObject ghost;  // in the map, no longer in the world
+    ghost.id = 10;
+    ghost.class_id = 1;
+    ghost.box = makeUprightBox({6.0, 3.0, 0.9}, {0.5, 1.0, 1.8}, 0.0);
+    ghost.n_match = 4;
+    m0.objects.push_back(ghost);
+    const std::vector<test::TrueObject> truth = {{0, makeUprightBox({6.0, 4.6, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};
+    auto opts = test::testOptions();
+    ObjectMapBuilder b(opts);
+    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+    b.setMap(m0);
+    std::mt19937 rng(3);
+    int skips_seen = 0;
+    for (int s = 0; s < 60; ++s) {  // back and forth in front of it, facing +x
+        const double x = 2.5 + 0.05 * (s % 20 < 10 ? s % 10 : 10 - s % 10);
+        const mrpt::poses::CPose3D pose(x, 3.0 + 0.01 * s, 0, 0, 0, 0);
+        insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
+        for (const auto& o : b.map().objects)
+            if (o.id == 10) skips_seen = o.n_skip;
+    }
+    b.flush();
+    // Purged once n_match / n_skip < tau_purge, i.e. after more than 4 / 0.5 = 8 active windows.
+    EXPECT_GE(skips_seen, 8);
+    for (const auto& o : b.map().objects) EXPECT_NE(o.id, 10);
+    EXPECT_EQ(b.stats().purged, 1u);
+    // The object that is there stays.
+    const auto* table = closest(b.map(), 0, truth[0].box.center);
+    ASSERT_NE(table, nullptr);
+    EXPECT_LT((table->box.center - truth[0].box.center).norm(), 0.1);
+}
+
+TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
+    const std::vector<test::TrueObject> truth = {{2, makeUprightBox({5.0, 2.6, 0.45}, {0.5, 0.5, 0.9}, 0.0)},
+                                                 {2, makeUprightBox({5.0, 3.4, 0.45}, {0.5, 0.5, 0.9}, 0.0)}};
+    ObjectMapBuilder b(test::testOptions());
+    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+    b.setMap(emptyMap());
+    std::mt19937 rng(11);
+    for (int s = 0; s < 40; ++s) {
+        const mrpt::poses::CPose3D pose(2.0 + 0.03 * s, 3.0, 0, 0.01 * (s % 7), 0, 0);
+        insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
+    }
+    b.flush();
+    int chairs = 0;
+    for (const auto& o : b.map().objects) chairs += o.class_id == 2 && o.n_match >= 5;
+    EXPECT_EQ(chairs, 2);
+    for (const auto& t : truth) {
+        const auto* o = closest(b.map(), 2, t.box.center);
+        ASSERT_NE(o, nullptr);
+        EXPECT_LT((o->box.center - t.box.center).head<2>().norm(), 0.1);
+    }
+}
+
+TEST(ObjectMapBuilder, DetectionInAnotherRoomDoesNotTouchThatRoom) {
+    // Rooms: x < 5 and x > 5 (door at y in [2.6, 3.4]). Object A in the left room.
+    const auto grid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);
+    auto m0 = emptyMap();
+    simp::world::MapObject a;
+    a.id = 1;
+    a.class_id = 0;
+    a.box = makeUprightBox({3.0, 1.5, 0.375}, {1.2, 0.8, 0.75}, 0.0);
+    a.n_match = 5;
+    m0.objects.push_back(a);
+    // The robot in the right room; a detection (seen through the wall by a faulty detector)
+    // lands on A.
+    const std::vector<test::TrueObject> truth = {{0, makeUprightBox({3.05, 1.5, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};
+    const mrpt::poses::CPose3D pose(6.5, 2.0, 0, 0, 0, 0);  // rear camera faces A
+    auto run = [&](RoomUpdatePolicy policy) {
+        auto opts = test::testOptions();
+        opts.room_policy = policy;
+        ObjectMapBuilder b(opts);
+        b.setFloorPlan(grid, {});
+        b.setMap(m0);
+        std::mt19937 rng(5);
+        insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+        b.flush();
+        return b;
+    };
+    const ObjectMapBuilder b = run(RoomUpdatePolicy::CurrentRoom);
+    EXPECT_NE(b.roomOf(3.0, 1.5), b.roomOf(6.5, 2.0));
+    ASSERT_EQ(b.map().objects.size(), 1u);
+    const auto& o = b.map().objects[0];
+    EXPECT_EQ(o.n_match, 5);
+    EXPECT_EQ(o.n_skip, 0);
+    EXPECT_TRUE(o.box.center.isApprox(a.box.center));
+    EXPECT_EQ(b.stats().rejected_room, 1u);
+    // Without the room policy the detection does enter the map (A is behind the wall, so a
+    // new object is made): the room filter is what kept it out.
+    const ObjectMapBuilder all = run(RoomUpdatePolicy::All);
+    EXPECT_EQ(all.stats().rejected_room, 0u);
+    EXPECT_EQ(all.map().objects.size(), 2u);
+}
+
+TEST(ObjectMapBuilder, FiltersDetectionsByClassConfidenceAndRange) {
+    auto opts = test::testOptions();
+    opts.per_class["chair"] = ClassFilter{0.5, 0.0, 0.0};  // disabled
+    opts.per_class["cabinet"] = ClassFilter{0.95, 0.0, 6.0};
+    opts.per_class["table"] = ClassFilter{0.5, 0.0, 2.0};
+    ObjectMapBuilder b(opts);
+    b.setMap(emptyMap());
+    const std::vector<test::TrueObject> truth = {{2, makeUprightBox({2.0, 0.0, 0.45}, {0.5, 0.5, 0.9}, 0.0)},
+                                                 {1, makeUprightBox({3.0, 0.5, 0.9}, {0.5, 1.0, 1.8}, 0.0)},
+                                                 {0, makeUprightBox({3.0, -0.5, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};
+    std::mt19937 rng(1);
+    const mrpt::poses::CPose3D pose(0, 0, 0, 0, 0, 0);
+    insertAll(b, test::observe(truth, kClasses, pose, rng), pose);  // confidence 0.9
+    b.flush();
+    EXPECT_EQ(b.stats().rejected_class, 1u);
+    EXPECT_EQ(b.stats().rejected_confidence, 1u);
+    EXPECT_EQ(b.stats().rejected_range, 1u);
+    EXPECT_TRUE(b.map().objects.empty());
+}
+
+TEST(ObjectMapBuilder, UnknownClassesAreAppendedByName) {
+    ObjectMapBuilder b(test::testOptions());
+    simp::world::ObjectMapData m;
+    m.class_names = {"sofa"};
+    m.class_noise.resize(1);
+    b.setMap(m);
+    const std::vector<test::TrueObject> truth = {{1, makeUprightBox({2.0, 0.0, 0.45}, {0.5, 0.5, 0.9}, 0.0)}};
+    std::mt19937 rng(1);
+    const mrpt::poses::CPose3D pose(0, 0, 0, 0, 0, 0);
+    insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
+    b.flush();
+    ASSERT_EQ(b.map().objects.size(), 1u);
+    EXPECT_EQ(b.map().class_names[b.map().objects[0].class_id], "cabinet");
+    EXPECT_EQ(b.map().class_names.size(), b.map().class_noise.size());
+}
+
+TEST(ObjectMapBuilder, InvalidMapIsRejected) {
+    ObjectMapBuilder b(test::testOptions());
+    auto m = emptyMap();
+    simp::world::MapObject o;
+    o.class_id = 7;
+    m.objects.push_back(o);
+    EXPECT_THROW(b.setMap(m), std::invalid_argument);
+    m.objects[0].class_id = 0;
+    m.objects[0].box.center.x() = std::nan("");
+    EXPECT_THROW(b.setMap(m), std::invalid_argument);
+}
