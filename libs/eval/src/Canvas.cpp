@@ -80,7 +80,7 @@ void drawPolygon(Canvas& canvas, const geometry::ConvexPolygon& poly, const cv::
 cv::Scalar classColor(int i) {
     static const cv::Scalar kPalette[] = {
         {180, 119, 31}, {14, 127, 255}, {44, 160, 44},  {40, 39, 214},  {189, 103, 148}, {75, 86, 140},   {194, 119, 227},
-        {127, 127, 127}, {34, 189, 188}, {207, 190, 23}, {0, 0, 128},   {128, 0, 128},   {0, 128, 128}, {60, 20, 220}};
+        {127, 127, 127}, {34, 189, 188}, {207, 190, 23}, {0, 0, 128},   {128, 0, 128},   {0, 128, 128}, {255, 0, 255}};
     constexpr int n = sizeof(kPalette) / sizeof(kPalette[0]);
     return kPalette[((i % n) + n) % n];
 }

@@ -28,7 +28,7 @@ void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, doubl
         cv::putText(img, fmt(v, 2), {area.x - 44, px(0, v).y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
     }
     for (double f = 0; f <= 1.0001; f += 0.25)  // time ticks
-        cv::putText(img, fmt(f * m.duration_s, 0), {px(f * t_max, 0).x - 8, area.y + area.height + 14},
+        cv::putText(img, fmt(f * m.duration_s, m.duration_s < 20 ? 1 : 0), {px(f * t_max, 0).x - 8, area.y + area.height + 14},
                     cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
     for (int x = area.x; x < area.x + area.width; x += 12)  // dashed bound
         cv::line(img, {x, px(0, bound).y}, {std::min(x + 6, area.x + area.width), px(0, bound).y}, kBlack, 1);
