@@ -201,7 +201,7 @@ double intersectionVolume(const Box3D& a, const Box3D& b) {
             const double overlap = std::min(ha, cb[ka] + hb) - std::max(-ha, cb[ka] - hb);
             if (overlap <= 0.0) return 0.0;
             // Footprints in the (i, j) plane: a is axis-aligned, b spanned by its two other axes.
-            ConvexPolygon fa = makeRectangle(Eigen::Vector2d::Zero(), a.size[i], a.size[j], 0.0);
+            const ConvexPolygon fa = makeRectangle(Eigen::Vector2d::Zero(), a.size[i], a.size[j], 0.0);
             const int k1 = (kb + 1) % 3, k2 = (kb + 2) % 3;
             const Eigen::Vector2d c2(cb[i], cb[j]);
             const Eigen::Vector2d u1 = 0.5 * b.size[k1] * Eigen::Vector2d(Rb(i, k1), Rb(j, k1));
