@@ -1,6 +1,7 @@
 #include <simp/world/MapConvertApps.h>
 
 #include <map>
+#include <set>
 #include <stdexcept>
 
 namespace simp::world {
@@ -62,8 +63,14 @@ int ImportMapApp::run(std::ostream& out) {
     const auto& g = result.floorplan;
     out << "Floor plan: " << g.getSizeX() << " x " << g.getSizeY() << " cells at " << g.getResolution()
         << " m, origin (" << g.getXMin() << ", " << g.getYMin() << ") m\n";
-    out << "Rooms: " << (result.rooms.empty() ? std::string("none") : std::to_string(result.objects.rooms.size()) + " named")
-        << "\n";
+    if (result.rooms.empty()) {
+        out << "Rooms: none (no room raster)\n";
+    } else {
+        std::set<int> ids;
+        for (auto it = result.rooms.ids.begin(); it != result.rooms.ids.end(); ++it)
+            if (*it != 0) ids.insert(*it);
+        out << "Rooms: " << ids.size() << " in the room raster, " << result.objects.rooms.size() << " named\n";
+    }
     out << "Objects: " << result.objects.objects.size() << " in " << result.objects.class_names.size()
         << " classes\n" << describeObjectCounts(result.objects);
     out << "Wrote world directory " << out_dir << "\n";
