@@ -3,6 +3,7 @@
 #include "TestUtil.h"
 
 #include <gmock/gmock.h>
+#include <opencv2/imgcodecs.hpp>
 #include <nlohmann/json.hpp>
 #include <simp/geometry/Footprint.h>
 #include <simp/world/MapConvertApps.h>
@@ -301,6 +302,45 @@ TEST(SimpImport, MissingNamedRoomRaster) {
     const std::string dir = exampleCopy();
     std::filesystem::remove(dir + "/roomseg.pgm");
     EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("floor.config: roomSeg: file"));
+}
+
+TEST(SimpExport, WithoutRoomsOrNoiseModels) {
+    const std::string dir = freshDir();
+    World w = importSimpMap(kExample);
+    w.rooms = RoomMap{};
+    w.objects.rooms.clear();
+    for (auto& o : w.objects.objects) {
+        o.noise.reset();
+        o.room_id = 0;
+    }
+    exportSimpMap(w, dir + "/d");
+    const cv::Mat roomseg = cv::imread(dir + "/d/roomseg.png", cv::IMREAD_UNCHANGED);
+    ASSERT_FALSE(roomseg.empty());
+    EXPECT_EQ(roomseg.type(), CV_8UC1);
+    EXPECT_EQ(cv::countNonZero(roomseg), 0);
+    const auto gv = readJson(dir + "/d/global_variance.json");
+    // Table: class model (0.5, -0.5, 2, 4) px at yaw 0 -> mean at centre (7, 7) + (0.5, +0.5) px
+    // (class y = world y = -v), scales (2, 4).
+    EXPECT_NEAR(gv["mx"][0].get<double>(), 7.5, 1e-9);
+    EXPECT_NEAR(gv["my"][0].get<double>(), 7.5, 1e-9);
+    EXPECT_NEAR(gv["sx"][0].get<double>(), 2.0, 1e-9);
+    EXPECT_NEAR(gv["sy"][0].get<double>(), 4.0, 1e-9);
+    // Chair: no model at all -> the default NoiseModel (sigma 0.2 m = 2 px at 0.1 m/px).
+    EXPECT_NEAR(gv["sx"][2].get<double>(), 2.0, 1e-9);
+    EXPECT_NEAR(gv["sy"][2].get<double>(), 2.0, 1e-9);
+    std::ifstream csv(dir + "/d/class_noise.csv");
+    std::string header, row0;
+    std::getline(csv, header);
+    std::getline(csv, row0);
+    EXPECT_EQ(header, "category,mx,my,sx,sy,b");
+    EXPECT_EQ(row0, "0,,,,,");
+}
+
+TEST(SimpExport, RoomIdsAbove255AreRejected) {
+    const std::string dir = freshDir();
+    World w = importSimpMap(kExample);
+    w.rooms.ids(5, 5) = 300;
+    EXPECT_THAT(thrownMessage([&] { exportSimpMap(w, dir + "/d"); }), HasSubstr("roomseg.png: room id 300 does not fit 8 bits"));
 }
 
 TEST(MapConvertApps, ImportThenExportInProcess) {
