@@ -50,8 +50,12 @@ std::optional<world::MapObject> tryPlaceSized(PlacementContext& ctx, const Objec
     const auto fp_gap = geometry::makeRectangle({x, y}, size.x() + 2 * ctx.gap_m, size.y() + 2 * ctx.gap_m, yaw);
     for (const auto& k : ctx.keepout)
         if (geometry::intersectionArea(fp_gap, k) > 0) return std::nullopt;
-    for (const auto& o : *ctx.objects)
+    const double reach = 0.5 * std::hypot(size.x(), size.y()) + ctx.gap_m;
+    for (const auto& o : *ctx.objects) {
+        // cheap bounding-circle test first: most objects are in other rooms
+        if ((o.box.center.head<2>() - Eigen::Vector2d(x, y)).norm() > reach + 0.5 * o.box.size.head<2>().norm()) continue;
         if (geometry::intersectionArea(fp_gap, objectFootprint(o)) > 0) return std::nullopt;
+    }
     world::MapObject o;
     o.id = (*ctx.next_id)++;
     o.class_id = obs::classIndexOf(*ctx.class_names, t.class_name);
@@ -110,10 +114,12 @@ std::optional<world::MapObject> placeInside(PlacementContext& ctx, const std::st
     for (int k = 0; k < tries; ++k) {
         const Eigen::Vector3d size = drawSize(t, rng);
         const double yaw = (r.width() >= r.height() ? 0.0 : M_PI / 2) + (rng.bernoulli(0.25) ? M_PI / 2 : 0.0);
-        const double half = 0.5 * std::max(size.x(), size.y()) + wall_margin_m;
-        if (r.width() < 2 * half || r.height() < 2 * half) continue;
-        const double x = rng.uniform(r.x0 + half, r.x1 - half);
-        const double y = rng.uniform(r.y0 + half, r.y1 - half);
+        const bool across = std::abs(std::sin(yaw)) > 0.5;  // local x along world y
+        const double hx = 0.5 * (across ? size.y() : size.x()) + wall_margin_m;
+        const double hy = 0.5 * (across ? size.x() : size.y()) + wall_margin_m;
+        if (r.width() < 2 * hx || r.height() < 2 * hy) continue;
+        const double x = rng.uniform(r.x0 + hx, r.x1 - hx);
+        const double y = rng.uniform(r.y0 + hy, r.y1 - hy);
         if (auto o = tryPlaceSized(ctx, t, x, y, size, yaw)) return o;
     }
     return std::nullopt;

@@ -85,7 +85,7 @@ void furnishRoom(PlacementContext& ctx, const Room& room, Rng& rng) {
             break;
         }
         case RoomType::Meeting: {
-            if (auto t = placeInside(ctx, "meeting table", 1.0, rng)) placeChairsAt(ctx, *t, true, rng);
+            if (auto t = placeInside(ctx, "meeting table", 0.75, rng)) placeChairsAt(ctx, *t, true, rng);
             if (rng.bernoulli(0.9)) placeAgainstWall(ctx, "board", plainWall(room, rng), rng);
             if (rng.bernoulli(0.5)) placeAgainstWall(ctx, "cabinet", -1, rng);
             if (rng.bernoulli(0.6)) placeAgainstWall(ctx, "potted plant", -1, rng);

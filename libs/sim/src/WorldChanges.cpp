@@ -26,8 +26,12 @@ bool fits(const world::MapObject& o, const Raster& walls, const world::World& w,
     if (!w.rooms.empty() && w.rooms.roomAt(o.box.center.x(), o.box.center.y()) <= 0) return false;
     const double yaw = geometry::yawOf(o.box);
     const auto grown = geometry::makeRectangle(o.box.center.head<2>(), o.box.size.x() + 0.1, o.box.size.y() + 0.1, yaw);
-    for (std::size_t i = 0; i < w.objects.objects.size(); ++i)
-        if (i != skip && geometry::intersectionArea(grown, geometry::footprint(w.objects.objects[i].box)) > 0) return false;
+    const double reach = 0.5 * o.box.size.head<2>().norm() + 0.05;
+    for (std::size_t i = 0; i < w.objects.objects.size(); ++i) {
+        const auto& b = w.objects.objects[i].box;
+        if (i == skip || (b.center - o.box.center).head<2>().norm() > reach + 0.5 * b.size.head<2>().norm()) continue;
+        if (geometry::intersectionArea(grown, geometry::footprint(b)) > 0) return false;
+    }
     return true;
 }
 

@@ -1,0 +1,80 @@
+// The simp-sim command line and sim.ini: bad input gives a clear message naming the option/key.
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/sim/SimApp.h>
+#include <simp/sim/SimParams.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+std::string errorOf(const std::vector<std::string>& args) {
+    simp::sim::SimApp app;
+    std::ostringstream out;
+    try {
+        if (app.initialize(args, out)) app.run(out);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(SimApp, BadCommandLines) {
+    EXPECT_NE(errorOf({"world", "--builtin", "office", "--out", "x"}).find("--seed"), std::string::npos);
+    EXPECT_NE(errorOf({"world", "--builtin", "castle", "--seed", "1", "--out", "x"}).find("castle"), std::string::npos);
+    EXPECT_NE(errorOf({"world", "--seed", "-3", "--out", "x"}).find("--seed"), std::string::npos);
+    EXPECT_NE(errorOf({"sequence", "--world", "w", "--seed", "1", "--out", "q", "--changes", "1.5"}).find("--changes"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"sequence", "--world", "w", "--seed", "1", "--out", "q", "--duration", "abc"}).find("--duration"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"sequence", "--seed", "1", "--out", "q", "--bogus", "1"}).find("--bogus"), std::string::npos);
+    EXPECT_NE(errorOf({"sequence", "--world", "/nonexistent/w", "--seed", "1", "--out", "q"}).find("/nonexistent/w"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"world", "--seed", "1", "--out", "q", "--config", "/nonexistent.ini"}).find("/nonexistent.ini"),
+              std::string::npos);
+    EXPECT_NE(errorOf({"dance"}).find("dance"), std::string::npos);
+    std::ostringstream help;
+    simp::sim::SimApp app;
+    EXPECT_FALSE(app.initialize({"sequence", "--help"}, help));
+    EXPECT_NE(help.str().find("--changes"), std::string::npos);
+}
+
+TEST(SimApp, IniValuesAreCheckedByKey) {
+    const auto errorOfIni = [](const std::string& text) -> std::string {
+        mrpt::config::CConfigFileMemory cfg(text);
+        simp::sim::SimParams p;
+        try {
+            p.loadFromConfig(cfg);
+        } catch (const std::exception& e) {
+            return e.what();
+        }
+        return "";
+    };
+    EXPECT_EQ(errorOfIni(""), "");
+    EXPECT_NE(errorOfIni("[detector]\ndetection_probability = 2\n").find("detection_probability"), std::string::npos);
+    EXPECT_NE(errorOfIni("[visibility]\nmax_range_m = 1 2 3\n").find("max_range_m"), std::string::npos);
+    EXPECT_NE(errorOfIni("[cameras]\ncount = 0\n").find("count"), std::string::npos);
+    EXPECT_NE(errorOfIni("[changes]\nfraction = -0.1\n").find("fraction"), std::string::npos);
+    // the shipped sim.ini loads
+    mrpt::config::CConfigFileMemory shipped;
+    const std::string path = std::string(SIMP_SOURCE_DIR) + "/config_ini/sim.ini";
+    ASSERT_TRUE(std::filesystem::exists(path));
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    EXPECT_EQ(errorOfIni(s.str()), "");
+}
+
+TEST(SimApp, WorldThenSequenceEndToEnd) {
+    const auto dir = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "sim" / "app";
+    std::filesystem::remove_all(dir);
+    const std::string w = (dir / "w").string(), q = (dir / "q").string();
+    EXPECT_EQ(errorOf({"world", "--builtin", "office", "--seed", "3", "--out", w, "--rooms", "3"}), "");
+    EXPECT_EQ(errorOf({"sequence", "--world", w, "--seed", "4", "--out", q, "--duration", "5", "--changes", "0.2"}), "");
+    for (const char* f : {"sequence.rawlog", "groundtruth.tum", "world/objects.json", "overview.png"})
+        EXPECT_TRUE(std::filesystem::exists(dir / "q" / f)) << f;
+}

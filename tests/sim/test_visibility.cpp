@@ -1,0 +1,145 @@
+// Camera visibility: walls hide objects, ranges and truncation, occlusion by nearer objects.
+#include <gtest/gtest.h>
+#include <simp/obs/CObservationObjects3D.h>
+#include <simp/obs/ObjectClasses.h>
+#include <simp/sim/DetectionModel.h>
+#include <simp/sim/OfficeLayout.h>
+#include <simp/sim/Visibility.h>
+
+namespace {
+
+/// A 8 m x 4 m free room, optionally with a full-height wall (0.15 m) across it at x = 3 m.
+simp::sim::Raster tinyWorld(bool with_wall) {
+    mrpt::maps::COccupancyGridMap2D grid;
+    grid.setSize(0, 8, 0, 4, 0.05, 1.0f);
+    if (with_wall) simp::sim::fillRect(grid, {3.0, 0.0, 3.15, 4.0}, true);
+    return simp::sim::wallRaster(grid);
+}
+
+simp::world::MapObject cabinetAt(double x, double y, std::int64_t id = 1) {
+    simp::world::MapObject o;
+    o.id = id;
+    o.class_id = simp::obs::classIndexOf(simp::obs::defaultClassNames(), "cabinet");
+    o.box = simp::geometry::makeUprightBox({x, y, 0.9}, {1.0, 0.45, 1.8}, 0.3);
+    return o;
+}
+
+simp::sim::CameraView cameraAt(double x, double y, double yaw) {
+    simp::sim::CameraParams cam;
+    return simp::sim::makeCameraView({x, y, yaw}, simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0), cam);
+}
+
+}  // namespace
+
+TEST(SimVisibility, ObjectBehindWallIsNeverSeen) {
+    const auto& names = simp::obs::defaultClassNames();
+    simp::sim::VisibilityParams vis;
+    const auto with_wall = tinyWorld(true), without = tinyWorld(false);
+    const std::vector<simp::world::MapObject> objects{cabinetAt(4.5, 2.0)};  // 1.35 m behind the wall
+    int seen_without_wall = 0;
+    for (double x = 0.8; x <= 2.6; x += 0.3)
+        for (double y = 0.8; y <= 3.2; y += 0.4)
+            for (double yaw = -0.6; yaw <= 0.6; yaw += 0.2) {
+                const auto view = cameraAt(x, y, yaw);
+                EXPECT_TRUE(simp::sim::visibleObjects(view, objects, names, with_wall, vis).empty())
+                    << "seen through the wall from " << x << ", " << y << ", " << yaw;
+                seen_without_wall += !simp::sim::visibleObjects(view, objects, names, without, vis).empty();
+            }
+    EXPECT_GT(seen_without_wall, 50);  // the control: same poses, no wall
+}
+
+TEST(SimVisibility, RangeFieldOfViewAndTruncation) {
+    const auto& names = simp::obs::defaultClassNames();
+    simp::sim::VisibilityParams vis;
+    const auto room = tinyWorld(false);
+    const std::vector<simp::world::MapObject> objects{cabinetAt(4.5, 2.0)};
+    // cabinet: min 1.0 m, max 5.0 m (mapping_args.json)
+    EXPECT_EQ(simp::sim::visibleObjects(cameraAt(1.0, 2.0, 0.0), objects, names, room, vis).size(), 1u);
+    EXPECT_TRUE(simp::sim::visibleObjects(cameraAt(3.8, 2.0, 0.0), objects, names, room, vis).empty());  // too close
+    EXPECT_TRUE(simp::sim::visibleObjects(cameraAt(1.0, 2.0, M_PI), objects, names, room, vis).empty());  // behind
+    // at the image border: at least half of the corners must project inside
+    const auto view = cameraAt(1.0, 2.0, -0.7);
+    const auto b = objects[0].box.transformed(view.T_world_camera.inverse());
+    simp::obs::ImageBox2D box2d;
+    double inside = 0;
+    ASSERT_TRUE(simp::sim::projectBox(view, b, box2d, inside));
+    EXPECT_EQ(inside < vis.min_inside_fraction, simp::sim::visibleObjects(view, objects, names, room, vis).empty());
+}
+
+TEST(SimVisibility, NearerObjectOccludes) {
+    const auto& names = simp::obs::defaultClassNames();
+    simp::sim::VisibilityParams vis;
+    const auto room = tinyWorld(false);
+    std::vector<simp::world::MapObject> objects{cabinetAt(5.0, 2.0, 1)};
+    objects.push_back(cabinetAt(2.6, 2.0, 2));
+    objects.back().box = simp::geometry::makeUprightBox({2.6, 2.0, 0.75}, {0.5, 2.0, 1.5}, 0.0);  // a tall screen
+    const auto seen = simp::sim::visibleObjects(cameraAt(1.0, 2.0, 0.0), objects, names, room, vis);
+    ASSERT_EQ(seen.size(), 1u);
+    EXPECT_EQ(seen[0].index, 1u);
+}
+
+TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
+    // many detections of one rotated object: offsets rotated back into the object frame have the
+    // model's mean and covariance (Eq. shiftdist), 4 standard errors
+    simp::world::NoiseModel m;
+    m.mean_m = {0.1, -0.05};
+    m.cov_m2 << 0.02, 0.0, 0.0, 0.08;
+    simp::sim::DetectorParams p;
+    p.detection_probability = 1;
+    p.wrong_class_probability = 0;
+    p.min_confidence = 0;
+    const auto o = cabinetAt(4.0, 2.0);
+    const auto view = cameraAt(1.0, 2.0, 0.0);
+    const double yaw = simp::geometry::yawOf(o.box);
+    simp::sim::Rng rng(3);
+    const int n = 5000;
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d sum2 = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < n; ++i) {
+        const auto d = simp::sim::detectObject(view, o, m, 14, p, rng);
+        ASSERT_TRUE(d.has_value());
+        EXPECT_EQ(d->class_id, o.class_id);
+        const Eigen::Vector3d c_world = view.T_world_camera * d->box_in_camera.center;
+        const Eigen::Vector2d off = Eigen::Rotation2Dd(-yaw) * (c_world.head<2>() - o.box.center.head<2>());
+        sum += off;
+        sum2 += off * off.transpose();
+        // the detector's box convention: H (vertical extent) along the box's y axis
+        EXPECT_NEAR(std::abs(d->box_in_camera.R.col(1).dot(view.T_world_camera.linear().transpose() * Eigen::Vector3d::UnitZ())), 1.0, 1e-9);
+    }
+    const Eigen::Vector2d mean = sum / n;
+    const Eigen::Matrix2d cov = sum2 / n - mean * mean.transpose();
+    for (int k = 0; k < 2; ++k) {
+        EXPECT_NEAR(mean[k], m.mean_m[k], 4 * std::sqrt(m.cov_m2(k, k) / n));
+        // SE of a Gaussian variance estimate: sigma^2 sqrt(2 / n)
+        EXPECT_NEAR(cov(k, k), m.cov_m2(k, k), 4 * m.cov_m2(k, k) * std::sqrt(2.0 / n));
+    }
+    EXPECT_NEAR(cov(0, 1), 0.0, 4 * std::sqrt(m.cov_m2(0, 0) * m.cov_m2(1, 1) / n));
+}
+
+TEST(SimDetection, MissesWrongLabelsAndScores) {
+    simp::world::NoiseModel m;
+    simp::sim::DetectorParams p;
+    p.detection_probability = 0.7;
+    p.wrong_class_probability = 0.2;
+    p.min_confidence = 0;
+    const auto o = cabinetAt(4.0, 2.0);
+    const auto view = cameraAt(1.0, 2.0, 0.0);
+    simp::sim::Rng rng(4);
+    const int n = 4000;
+    int detected = 0, wrong = 0;
+    double conf_right = 0, conf_wrong = 0;
+    for (int i = 0; i < n; ++i)
+        if (const auto d = simp::sim::detectObject(view, o, m, 14, p, rng)) {
+            ++detected;
+            if (d->class_id != o.class_id) {
+                ++wrong;
+                conf_wrong += d->confidence;
+            } else {
+                conf_right += d->confidence;
+            }
+        }
+    const auto se = [](double q, double k) { return std::sqrt(q * (1 - q) / k); };
+    EXPECT_NEAR(detected / double(n), 0.7, 4 * se(0.7, n));
+    EXPECT_NEAR(wrong / double(detected), 0.2, 4 * se(0.2, detected));
+    EXPECT_GT(conf_right / (detected - wrong), conf_wrong / wrong + 0.2);
+}
