@@ -224,3 +224,29 @@ TEST(LabelsBadInput, FilesAreNamed) {
               std::string::npos);
     EXPECT_NE(err([&] { labels::readCameraFrames(d + "/none.json"); }).find("none.json: file not found"), std::string::npos);
 }
+
+TEST(CameraFrames, PoseFromRobotPosesAndRig) {
+    const std::string d = outDir("rig_frames");
+    std::ofstream(d + "/rig.json") << R"({"cameras": [{"name": "FRONT", "x": 0.5, "y": 0, "z": 1, "yaw_rad": 0,
+        "fx": 400, "fy": 400, "cx": 320, "cy": 240, "width": 640, "height": 480}]})";
+    // Robot at x = t - 1 heading +x; at t = 0.5 it is at x = -0.5, the camera 0.5 m ahead at (0, 0, 1).
+    io::writeTum(d + "/poses.tum", {{0.0, {-1.0, 0.0, 0.0}}, {1.0, {0.0, 0.0, 0.0}}});
+    std::ofstream(d + "/frames.json") << R"({"images": [{"id": 7, "file_path": "a.png", "camera": "FRONT", "timestamp": 0.5}]})";
+    const auto rig = labels::loadCameraRig(d + "/rig.json");
+    const auto poses = io::readTum(d + "/poses.tum");
+    const auto ims = labels::readCameraFrames(d + "/frames.json", &rig, &poses);
+    ASSERT_EQ(ims.size(), 1u);
+    const auto ref = camera();  // at (0, 0, 1) looking along +x
+    EXPECT_LT((ims[0].world_T_camera.matrix() - ref.world_T_camera.matrix()).norm(), 1e-12);
+    EXPECT_LT((ims[0].K - ref.K).norm(), 1e-12);
+    EXPECT_EQ(ims[0].width, 640);
+    // Without rig and poses the same file is an error naming the key.
+    try {
+        labels::readCameraFrames(d + "/frames.json");
+        FAIL() << "expected an error";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("frames.json: images[0].camera: an image given by camera name needs --rig and --poses"),
+                  std::string::npos)
+            << e.what();
+    }
+}

@@ -1,13 +1,41 @@
 /// \file CameraFrames.cpp
 #include "JsonUtil.h"
 
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
 #include <simp/labels/CameraFrames.h>
 
 #include <set>
 
 namespace simp::labels {
 
-std::vector<PosedImage> readCameraFrames(const std::string& path) {
+namespace {
+
+/// Fills K, size and pose of `im` from the rig camera and the interpolated robot pose.
+void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
+                 const std::vector<io::StampedPose2D>* poses, const std::string& path, const std::string& k) {
+    const std::string cam = detail::text(o["camera"], path, k + ".camera");
+    if (!rig || !poses)
+        detail::fail(path, k + ".camera", "an image given by camera name needs --rig and --poses");
+    const int c = rig->indexOf(cam);
+    if (c < 0) detail::fail(path, k + ".camera", "camera '" + cam + "' is not in the rig file");
+    if (!o.contains("timestamp")) detail::fail(path, k + ".timestamp", "missing key (needed with \"camera\")");
+    mrpt::math::TPose2D p;
+    if (!io::interpolatePose(*poses, im.timestamp_s, p))
+        detail::fail(path, k + ".timestamp", "time " + std::to_string(im.timestamp_s) + " s is outside the poses' range");
+    const RigCamera& rc = rig->cameras[static_cast<std::size_t>(c)];
+    const mrpt::poses::CPose3D world_T_camera = mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)) + rc.robotTCamera();
+    im.world_T_camera.linear() = world_T_camera.getRotationMatrix().asEigen();
+    im.world_T_camera.translation() = Eigen::Vector3d(world_T_camera.x(), world_T_camera.y(), world_T_camera.z());
+    im.K << rc.intrinsics.fx(), 0, rc.intrinsics.cx(), 0, rc.intrinsics.fy(), rc.intrinsics.cy(), 0, 0, 1;
+    im.width = static_cast<int>(rc.intrinsics.ncols);
+    im.height = static_cast<int>(rc.intrinsics.nrows);
+}
+
+}  // namespace
+
+std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRig* rig,
+                                         const std::vector<io::StampedPose2D>* poses) {
     const detail::json j = detail::readJsonFile(path);
     const detail::json& ims = detail::require(j, "images", path, "images");
     if (!ims.is_array()) detail::fail(path, "images", "expected a list of images");
@@ -21,6 +49,11 @@ std::vector<PosedImage> readCameraFrames(const std::string& path) {
         if (!ids.insert(im.id).second) detail::fail(path, k + ".id", "duplicate image id " + std::to_string(im.id));
         im.file_path = detail::text(detail::require(o, "file_path", path, k + ".file_path"), path, k + ".file_path");
         if (o.contains("timestamp")) im.timestamp_s = detail::number(o["timestamp"], path, k + ".timestamp");
+        if (o.contains("camera")) {
+            poseFromRig(im, o, rig, poses, path, k);
+            out.push_back(im);
+            continue;
+        }
         im.width = static_cast<int>(detail::integer(detail::require(o, "width", path, k + ".width"), path, k + ".width"));
         im.height = static_cast<int>(detail::integer(detail::require(o, "height", path, k + ".height"), path, k + ".height"));
         if (im.width <= 0 || im.height <= 0) detail::fail(path, k + ".width/height", "must be > 0 px");

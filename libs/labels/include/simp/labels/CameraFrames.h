@@ -7,8 +7,14 @@
 ///                "rotation": [[..], [..], [..]]  or  "quaternion_wxyz": [w, x, y, z]}]}
 /// position_m / rotation = pose of the camera optical frame (x right, y down, z forward) in the
 /// world: p_world = R p_camera + position (the columns of R are the camera axes in the world).
+///
+/// Alternatively an image gives `"camera": NAME` and `"timestamp"` instead of K / width / height /
+/// position_m / rotation: the pose is then world_T_robot(timestamp) (+) robot_T_camera and K the
+/// camera's, from robot poses (TUM, interpolated) and a camera rig file (CameraRig.h).
 
 #include <Eigen/Geometry>
+#include <simp/io/Tum.h>
+#include <simp/labels/CameraRig.h>
 
 #include <cstdint>
 #include <string>
@@ -27,7 +33,10 @@ struct PosedImage {
 
 /// \throw std::runtime_error naming the file and key (missing file/key, non-number, bad K,
 ///        width/height <= 0, rotation not orthonormal, duplicate id).
-std::vector<PosedImage> readCameraFrames(const std::string& path);
+///        An image with "camera" needs `rig` and `poses` (else: error naming the key), a camera of the
+///        rig and a timestamp inside the poses' range.
+std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRig* rig = nullptr,
+                                         const std::vector<io::StampedPose2D>* poses = nullptr);
 /// Writes the same format (rotation as a 3x3 matrix, full precision).
 void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& images);
 

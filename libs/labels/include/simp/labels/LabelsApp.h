@@ -2,7 +2,7 @@
 /// \file LabelsApp.h
 /// simp-labels: Omni3D labels from a ground-truth world, posed images and 2D detections.
 ///   simp-labels --world W --frames FRAMES.json --detections2d DET.csv|json --out labels.json [--config INI]
-///               [--iou T]
+///               [--iou T] [--poses poses.tum --rig rig.ini|json]
 
 #include <simp/labels/LabelGenerator.h>
 
@@ -18,7 +18,7 @@ class LabelsApp {
     int run(std::ostream& out);
     static std::string usage();
 
-    std::string world_path, frames_path, detections_path, out_path, config_path;
+    std::string world_path, frames_path, detections_path, out_path, config_path, poses_path, rig_path;
     LabelOptions options;
     LabelSet result;  ///< after run()
 };
