@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
         app.run();
         return 0;
     } catch (const std::exception& e) {
-        std::cerr << "simp-localize: error: " << e.what() << std::endl;
+        std::cerr << "simp-localize: error: " << simp::localization::describeError(e) << std::endl;
         return 1;
     }
 }

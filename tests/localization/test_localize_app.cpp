@@ -222,6 +222,17 @@ TEST(LocalizeApp, BadInputsNameTheFile) {
     EXPECT_NE(err.find("bad.ini"), std::string::npos) << err;
     EXPECT_NE(err.find("a1"), std::string::npos) << err;
 
+    // MRPT's own loader: a required [PF_options] key missing; a PF algorithm MRPT's MCL lacks.
+    std::ofstream(bad_ini) << "[PF_options]\nPF_algorithm = pfStandardProposal\n";
+    err = errorOf([&] { LocalizeApp app; runApp(app, args); });
+    EXPECT_NE(err.find("bad.ini"), std::string::npos) << err;
+    EXPECT_NE(describeError(std::runtime_error(err)).find("not found"), std::string::npos) << err;
+    EXPECT_EQ(err.find("Call stack"), std::string::npos) << err;
+    std::ofstream(bad_ini) << "[PF_options]\nPF_algorithm = pfOptimalProposal\nresamplingMethod = prSystematic\n"
+                              "adaptiveSampleSize = false\nBETA = 0.5\nsampleSize = 1\n";
+    err = errorOf([&] { LocalizeApp app; runApp(app, args); });
+    EXPECT_NE(err.find("pfOptimalProposal"), std::string::npos) << err;
+
     // Missing .ini, missing required argument.
     args = baseArgs(sc, out);
     args[7] = out + "/missing.ini";

@@ -78,6 +78,22 @@ class RecordingOutput : public TCLAP::StdOutput {
 
 }  // namespace
 
+std::string describeError(const std::exception& e) {
+    const std::string all = mrpt::exception_to_str(e);
+    if (all.find("Message:") == std::string::npos) return all;
+    std::istringstream in(all);
+    std::string out;
+    for (std::string line; std::getline(in, line);) {
+        const auto pos = line.find("Message:");
+        if (pos == std::string::npos) continue;
+        std::string m = line.substr(pos + 8);
+        m.erase(0, m.find_first_not_of(' '));
+        if (m.empty() || m.rfind("Exception while parsing", 0) == 0) continue;
+        out += (out.empty() ? "" : ": ") + m;
+    }
+    return out.empty() ? all : out;
+}
+
 mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizeApp::defaultPfOptions() {
     mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
     o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
@@ -157,8 +173,12 @@ void LocalizeApp::loadConfig() {
         motion.loadFromConfigFile(params, "MotionModel");
         if (params.sectionExists("PF_options")) pf_options.loadFromConfigFile(params, "PF_options");
     } catch (const std::exception& e) {
-        throw std::invalid_argument(config_path + ": " + mrpt::exception_to_str(e));
+        throw std::invalid_argument(config_path + ": " + describeError(e));
     }
+    if (pf_options.PF_algorithm == mrpt::bayes::CParticleFilter::pfOptimalProposal)
+        throw std::invalid_argument(config_path +
+                                    ": [PF_options] PF_algorithm = pfOptimalProposal is not implemented by MRPT's "
+                                    "CMonteCarloLocalization2D (use pfStandardProposal)");
 }
 
 void LocalizeApp::run() {
@@ -177,7 +197,7 @@ void LocalizeApp::run() {
     } catch (const std::invalid_argument&) {
         throw;
     } catch (const std::exception& e) {
-        throw std::invalid_argument(config_path + ": [MetricMap]: " + mrpt::exception_to_str(e));
+        throw std::invalid_argument(config_path + ": [MetricMap]: " + describeError(e));
     }
     if (!experiment.sensor_model.empty())
         map->likelihoodOptions.sensor_model = maps::parseSensorModelType(experiment.sensor_model);

@@ -194,7 +194,8 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
                     "max_loglikelihood_dyn_range", "pfAuxFilterOptimal_MaximumSearchSamples",
                     "pfAuxFilterStandard_FirstStageWeightsMonteCarlo", "pfAuxFilterOptimal_MLE"},
                    file);
-    // The object map's sections (simp::maps::CObjectMap reads them through MRPT's map loader).
+    // The object map's sections (simp::maps::CObjectMap reads them through MRPT's map loader);
+    // _insertOpts holds the mapping options, which simp-localize does not use.
     std::vector<std::string> sections;
     cfg.getAllSections(sections);
     for (const auto& sec : sections) {
@@ -207,8 +208,6 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
                             "mp_resolution_m", "mp_min_probability", "skip_classes_without_noise", "edt_sigma_m",
                             "edt_max_distance_m", "edt_resolution_m"},
                            file);
-        else if (sec.size() > 11 && sec.compare(sec.size() - 11, 11, "_insertOpts") == 0)
-            checkKnownKeys(cfg, sec, {}, file);
     }
     checkKnownKeys(cfg, "KLD_options",
                    {"KLD_binSize_XY", "KLD_binSize_PHI", "KLD_delta", "KLD_epsilon", "KLD_minSampleSize",

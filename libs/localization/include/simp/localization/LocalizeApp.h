@@ -58,4 +58,8 @@ class LocalizeApp {
     void loadConfig();
 };
 
+/// The message of an exception for a user: MRPT's nested exceptions reduced to their
+/// "Message:" lines (no locations, no call stacks).
+std::string describeError(const std::exception& e);
+
 }  // namespace simp::localization
