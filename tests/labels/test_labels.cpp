@@ -2,6 +2,7 @@
 /// made here: a camera at 1 m looking along world +x, a table in front of a chair (occlusion), a
 /// board half outside the image (truncation), a chair behind a wall of the floor plan.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <simp/labels/LabelsApp.h>
 #include <simp/labels/Omni3DBox.h>
 #include <simp/world/World.h>
@@ -249,4 +250,17 @@ TEST(CameraFrames, PoseFromRobotPosesAndRig) {
                   std::string::npos)
             << e.what();
     }
+}
+
+TEST(LabelOptions, ExampleIniHoldsTheDefaults) {
+    mrpt::config::CConfigFile cfg(std::string(SIMP_SOURCE_DIR) + "/tests/data/detector_io/simp-labels.ini");
+    labels::LabelOptions o;
+    o.iou_threshold = 0.9;
+    o.keep_unmatched = true;
+    o.visibility.pixel_step = 9;
+    o.loadFromConfigFile(cfg, "simp-labels");
+    EXPECT_DOUBLE_EQ(o.iou_threshold, 0.5);
+    EXPECT_FALSE(o.keep_unmatched);
+    EXPECT_EQ(o.visibility.pixel_step, 4);
+    EXPECT_TRUE(o.visibility.ignore_object_cells);
 }

@@ -2,6 +2,7 @@
 /// Gaussian fit and its standard errors, and simp-stats end to end on simulated detections whose
 /// centres are drawn from a known per-class Gaussian in the object frame.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <simp/labels/DetectionRawlog.h>
@@ -256,4 +257,17 @@ TEST(StatsApp, BadInputIsNamed) {
     EXPECT_NE(errorOf([&] { init({"--rawlog", "r", "--poses", "p", "--world", d + "/empty.json", "--out", d + "/o"}); })
                   .find("no objects"),
               std::string::npos);
+}
+
+TEST(StatsOptions, ExampleIniHoldsTheDefaults) {
+    mrpt::config::CConfigFile cfg(std::string(SIMP_SOURCE_DIR) + "/tests/data/detector_io/simp-stats.ini");
+    stats::StatsOptions o;
+    o.delta_m = 7.0;
+    o.fit_source = "histogram";
+    o.loadFromConfigFile(cfg, "simp-stats");
+    const stats::StatsOptions defaults;
+    EXPECT_DOUBLE_EQ(o.delta_m, defaults.delta_m);
+    EXPECT_EQ(o.fit_source, defaults.fit_source);
+    EXPECT_DOUBLE_EQ(o.cell_size_m, 0.05);
+    EXPECT_EQ(o.min_samples, defaults.min_samples);
 }
