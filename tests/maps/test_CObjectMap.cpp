@@ -252,6 +252,27 @@ TEST(CObjectMap, OtherObservationsAreNeutral) {
     EXPECT_FALSE(map.canComputeObservationLikelihood(odo));
     EXPECT_EQ(map.computeObservationLikelihood(odo, mrpt::poses::CPose3D()), 0.0);
     EXPECT_FALSE(map.insertObservation(odo));
+    EXPECT_EQ(map.size(), 5u);
+}
+
+TEST(CObjectMap, InsertObservationBuildsTheMapWithLibsMapping) {
+    // Detections of a table and a cabinet (classes the default mapping filters accept within
+    // 1..4.5 m), seen twice from the same pose, into an empty map.
+    const auto gt = test::smallMap();
+    const TPose2D truth(1.0, 0.5, 0.4);
+    const auto o = test::detect(gt, truth, {1, 2}, 0.95f);
+    CObjectMap map;
+    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
+    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
+    ASSERT_NE(map.mapBuilder(), nullptr);
+    map.flushInsertions();  // integrate the local map now (no d_xy / d_theta motion happened)
+    ASSERT_EQ(map.size(), 2u);
+    for (const auto& obj : map.data().objects) {
+        const auto& name = map.data().class_names.at(static_cast<std::size_t>(obj.class_id));
+        const auto& expected = gt.objects[name == "table" ? 1 : 2].box;
+        EXPECT_LT((obj.box.center - expected.center).norm(), 1e-6) << name;
+        EXPECT_EQ(obj.n_match, 2) << name;
+    }
 }
 
 TEST(CObjectMap, SavesRepresentationAndVisualization) {

@@ -96,6 +96,7 @@ CObjectMap& CObjectMap::operator=(const CObjectMap& other) {
     std::lock_guard<std::mutex> lock(m_cache_mutex);
     m_model = model;
     m_warned_empty = false;
+    m_builder.reset();  // mapping state is not copied
     return *this;
 }
 
@@ -107,6 +108,7 @@ void CObjectMap::setData(const simp::world::ObjectMapData& data) {
     m_data = data;
     m_model = std::move(model);
     m_warned_empty = false;
+    m_builder.reset();  // the next insertion starts from the new content
 }
 
 void CObjectMap::internal_clear() {
@@ -116,14 +118,6 @@ void CObjectMap::internal_clear() {
     empty.class_names = classes;
     empty.class_noise = noise;
     setData(empty);
-}
-
-bool CObjectMap::internal_insertObservation(const mrpt::obs::CObservation& /*obs*/,
-                                            const std::optional<const mrpt::poses::CPose3D>& /*robotPose*/) {
-    // Map construction (paper Sec. "3D Semantic Map Construction") lives in libs/mapping
-    // (simp::mapping::ObjectMapBuilder); it is not wired into this map yet, so inserting an
-    // observation changes nothing.
-    return false;
 }
 
 std::string CObjectMap::asString() const {

@@ -75,14 +75,14 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     return p;
 }
 
-void CObjectMap::TInsertionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& /*source*/,
-                                                       const std::string& /*section*/) {
-    // No insertion options yet: map construction is not wired into CObjectMap.
+void CObjectMap::TInsertionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+                                                       const std::string& section) {
+    mapping.loadFromConfigFile(source, section);
 }
 
 void CObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const {
     out << "\n----------- [simp::maps::CObjectMap::TInsertionOptions] ------------\n\n";
-    out << "(none: observation insertion is not wired to the mapping algorithm yet)\n";
+    mapping.dumpToTextStream(out);
 }
 
 }  // namespace simp::maps

@@ -8,6 +8,7 @@
 #include <simp/maps/ConfidenceThresholds.h>
 #include <simp/maps/SensorModel.h>
 #include <simp/maps/SensorModelTypes.h>
+#include <simp/mapping/MappingOptions.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/ObjectMapData.h>
 
@@ -15,6 +16,10 @@
 #include <mutex>
 #include <optional>
 #include <string>
+
+namespace simp::mapping {
+class ObjectMapBuilder;
+}
 
 namespace simp::maps {
 
@@ -78,11 +83,22 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         SensorModelParams modelParams() const;
     } likelihoodOptions;
 
-    /// [<prefix>_insertOpts]: placeholder for the mapping algorithm (not wired yet).
+    /// [<prefix>_insertOpts]: the options of the mapping algorithm (simp::mapping::MappingOptions,
+    /// keys documented in doc/mapping.md), used by insertObservation().
     struct TInsertionOptions : public mrpt::config::CLoadableOptions {
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
+        simp::mapping::MappingOptions mapping;
     } insertionOptions;
+
+    /// @name Map construction (paper Sec. "3D Semantic Map Construction", libs/mapping)
+    /// @{
+    /// Integrates the builder's pending local map into the map now (insertObservation()
+    /// integrates only when the robot moved d_xy or turned d_theta, as the paper does).
+    void flushInsertions();
+    /// The builder used by insertObservation(), or nullptr before the first insertion.
+    const simp::mapping::ObjectMapBuilder* mapBuilder() const { return m_builder.get(); }
+    /// @}
 
     /// @name Sensor model
     /// @{
@@ -136,11 +152,15 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     /// Map class id of detection k, or -1 when ignored (threshold, class not in the map).
     int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
     void warnEmptyOnce() const;
+    /// Copies the builder's map into m_data when it changed; the model is rebuilt lazily.
+    void syncFromBuilder();
 
     simp::world::ObjectMapData m_data;
     mutable std::mutex m_cache_mutex;
     mutable std::shared_ptr<const SensorModel> m_model;  ///< built for m_data and m_model->params()
     mutable bool m_warned_empty = false;
+    /// Mapping state (local map, counters); reset by setData() and not copied with the map.
+    std::shared_ptr<simp::mapping::ObjectMapBuilder> m_builder;
 };
 
 /// Applies a class list to a map: objects of other classes are dropped, class ids and class
