@@ -17,6 +17,7 @@ void LabelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, 
     visibility.occupied_threshold = cfg.read_double(s, "visibility_occupied_threshold", visibility.occupied_threshold);
     visibility.ignore_object_cells = cfg.read_bool(s, "visibility_ignore_object_cells", visibility.ignore_object_cells);
     visibility.max_range_m = cfg.read_double(s, "visibility_max_range_m", visibility.max_range_m);
+    visibility.object_cell_margin_m = cfg.read_double(s, "visibility_object_cell_margin_m", visibility.object_cell_margin_m);
     validate();
 }
 
@@ -29,6 +30,7 @@ void LabelOptions::validate() const {
     if (!(visibility.occupied_threshold > 0 && visibility.occupied_threshold <= 1))
         bad("visibility_occupied_threshold", "must be in (0, 1]");
     if (!(visibility.max_range_m > 0)) bad("visibility_max_range_m", "must be > 0 (m)");
+    if (!(visibility.object_cell_margin_m >= 0)) bad("visibility_object_cell_margin_m", "must be >= 0 (m)");
 }
 
 void LabelOptions::dumpToTextStream(std::ostream& out) const {
@@ -38,7 +40,8 @@ void LabelOptions::dumpToTextStream(std::ostream& out) const {
         << "\nvisibility_pixel_step = " << visibility.pixel_step
         << "\nvisibility_occupied_threshold = " << visibility.occupied_threshold
         << "\nvisibility_ignore_object_cells = " << visibility.ignore_object_cells
-        << "\nvisibility_max_range_m = " << visibility.max_range_m << "\n";
+        << "\nvisibility_max_range_m = " << visibility.max_range_m
+        << "\nvisibility_object_cell_margin_m = " << visibility.object_cell_margin_m << "\n";
 }
 
 geometry::Box3D boxInCameraOmni3D(const PosedImage& image, const geometry::Box3D& box_world) {

@@ -38,10 +38,11 @@ WallGrid makeWallGrid(const mrpt::maps::COccupancyGridMap2D& g, const std::vecto
         for (const auto& b : boxes) {
             Eigen::Vector2d lo, hi;
             geometry::footprint(b).bounds(lo, hi);
-            geometry::Box3D grown = b;  // the box grown by 1.5 cells on every side
-            grown.size += Eigen::Vector3d::Constant(3.0 * r);
-            for (int cy = std::max(0, g.y2idx(lo.y()) - 2); cy <= std::min(w.ny - 1, g.y2idx(hi.y()) + 2); ++cy)
-                for (int cx = std::max(0, g.x2idx(lo.x()) - 2); cx <= std::min(w.nx - 1, g.x2idx(hi.x()) + 2); ++cx)
+            geometry::Box3D grown = b;  // the box grown by the margin on every side
+            grown.size += Eigen::Vector3d::Constant(2.0 * o.object_cell_margin_m);
+            const int m = static_cast<int>(std::ceil(o.object_cell_margin_m / r)) + 1;
+            for (int cy = std::max(0, g.y2idx(lo.y()) - m); cy <= std::min(w.ny - 1, g.y2idx(hi.y()) + m); ++cy)
+                for (int cx = std::max(0, g.x2idx(lo.x()) - m); cx <= std::min(w.nx - 1, g.x2idx(hi.x()) + m); ++cx)
                     if (geometry::containsPoint(grown, Eigen::Vector3d(g.idx2x(cx), g.idx2y(cy), b.center.z())))
                         w.wall[static_cast<std::size_t>(cy) * w.nx + cx] = 0;
         }

@@ -1,0 +1,77 @@
+/// simp-labels on the authors' real office floor (read-only, optional): the ground-truth floor plan
+/// draws furniture footprints as occupied, so the wall ray casting must ignore the cells under the
+/// objects (visibility_ignore_object_cells), or every object would hide itself.
+#include <gtest/gtest.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+#include <simp/labels/Visibility.h>
+#include <simp/obs/CObservationObjects3D.h>
+#include <simp/world/SimpFormat.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace simp;
+
+namespace {
+
+const std::string kOffice = std::string(SIMP_SHARED_DATA_DIR) + "/simp-office";
+
+bool freeCell(const mrpt::maps::COccupancyGridMap2D& g, double x, double y) {
+    const int cx = g.x2idx(x), cy = g.y2idx(y);
+    return cx >= 0 && cy >= 0 && cx < static_cast<int>(g.getSizeX()) && cy < static_cast<int>(g.getSizeY()) &&
+           g.getCell(cx, cy) < 0.3f;
+}
+
+}  // namespace
+
+TEST(LabelsOffice, ObjectsSeenFromAFreeViewpointAreVisible) {
+    if (!std::filesystem::exists(kOffice + "/global_variance.json"))
+        GTEST_SKIP() << "the authors' data is absent (" << kOffice << "); this test needs it";
+    const world::World w = world::importSimpMap(kOffice);
+    std::vector<geometry::Box3D> boxes;
+    for (const auto& o : w.objects.objects) boxes.push_back(o.box);
+    labels::PosedImage im;
+    im.K << 380.07, 0, 324.47, 0, 379.66, 237.79, 0, 0, 1;
+    int tried = 0, visible_masked = 0, visible_unmasked = 0;
+    labels::VisibilityOptions masked, unmasked;
+    masked.pixel_step = unmasked.pixel_step = 8;
+    unmasked.ignore_object_cells = false;
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        // A viewpoint 1.2 m beyond the box's half diagonal, in the first of 8 directions whose
+        // straight path to the object is free floor in the plan up to 0.15 m from the box.
+        const Eigen::Vector2d c = boxes[i].center.head<2>();
+        const double r = 0.5 * boxes[i].size.head<2>().norm() + 1.2;
+        geometry::Box3D near_box = boxes[i];
+        near_box.size += Eigen::Vector3d::Constant(0.3);
+        for (int k = 0; k < 8; ++k) {
+            const double a = k * M_PI / 4;
+            const Eigen::Vector2d cam = c + r * Eigen::Vector2d(std::cos(a), std::sin(a));
+            bool ok = true;
+            for (double s = 0; s <= r && ok; s += 0.025) {
+                const Eigen::Vector2d p = cam - s * Eigen::Vector2d(std::cos(a), std::sin(a));
+                if (geometry::containsPoint(near_box, Eigen::Vector3d(p.x(), p.y(), boxes[i].center.z()))) break;
+                ok = freeCell(w.floorplan, p.x(), p.y());
+            }
+            if (!ok) continue;
+            const double yaw = a + M_PI;  // looking back at the object
+            const mrpt::poses::CPose3D T = mrpt::poses::CPose3D(mrpt::poses::CPose2D(cam.x(), cam.y(), 0)) +
+                                           obs::cameraPoseOnRobot(0, 0, 0.63, yaw);
+            im.world_T_camera.linear() = T.getRotationMatrix().asEigen();
+            im.world_T_camera.translation() = Eigen::Vector3d(T.x(), T.y(), T.z());
+            ++tried;
+            const double vm = labels::computeVisibility(im, boxes, &w.floorplan, masked)[i];
+            const double vu = labels::computeVisibility(im, boxes, &w.floorplan, unmasked)[i];
+            visible_masked += vm > 0.5;
+            visible_unmasked += vu > 0.5;
+            break;
+        }
+    }
+    ASSERT_GT(tried, 20) << "too few free viewpoints in the office map";
+    // The viewpoint's centre line is free, so with the objects' own cells ignored most objects are
+    // mostly visible (the rest: drawers under desks, objects in niches, hidden by boxes or walls off
+    // the centre line; 77 of 87 with this data); without, the furniture outlines drawn in the plan
+    // hide almost every object behind its own footprint (3 of 87).
+    EXPECT_GT(visible_masked, 3 * tried / 4) << visible_masked << " of " << tried;
+    EXPECT_LT(visible_unmasked, tried / 10) << visible_unmasked << " of " << tried;
+}
