@@ -97,13 +97,18 @@ TEST_F(BatchFixture, RunsEveryCombinationAggregatesAndResumes) {
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 9);
 
     // Second call: the successful runs are resumed, only the failed ones (no estimate) run again.
+    // Off a terminal: one progress line per run.
     std::ostringstream progress2;
-    const auto again = runBatch(cfg, out, progress2);
+    const auto again = runBatch(cfg, out, progress2, /*terminal=*/false);
     EXPECT_EQ(lineCount(root / "calls.txt"), 8 + 4);
     int resumed = 0;
     for (const auto& r : again) resumed += r.resumed ? 1 : 0;
     EXPECT_EQ(resumed, 4);
-    EXPECT_NE(progress2.str().find("(4 resumed)"), std::string::npos) << progress2.str();
+    const std::string lines = progress2.str();
+    EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 8) << lines;
+    EXPECT_NE(lines.find("[8/8 runs]"), std::string::npos) << lines;
+    EXPECT_NE(lines.find("R1 simp seed 7: resumed, ok, success"), std::string::npos) << lines;
+    EXPECT_NE(lines.find("R2 o seed 8: localize_failed"), std::string::npos) << lines;
 }
 
 TEST_F(BatchFixture, ConfigErrorsNameTheKey) {

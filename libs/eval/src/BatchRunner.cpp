@@ -90,7 +90,17 @@ RunRecord executeRun(const BatchConfig& cfg, const std::string& bin, const Job& 
     return r;
 }
 
-void drawProgress(std::ostream& out, std::size_t done, std::size_t total, std::size_t resumed) {
+/// A progress bar redrawn in place on a terminal, one line per finished run otherwise.
+void drawProgress(std::ostream& out, std::size_t done, std::size_t total, std::size_t resumed, bool terminal,
+                  const RunRecord* last) {
+    if (!terminal) {
+        if (!last) return;
+        out << "[" << done << "/" << total << " runs] " << last->sequence << " " << last->method << " seed "
+            << last->seed << ": " << (last->resumed ? "resumed, " : "") << last->status
+            << (last->status == "ok" ? (last->success ? ", success" : ", no success") : "") << "\n";
+        out.flush();
+        return;
+    }
     constexpr int kWidth = 40;
     const int filled = total ? static_cast<int>(kWidth * done / total) : kWidth;
     out << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, ' ') << "] " << done << "/" << total
@@ -152,7 +162,8 @@ std::vector<std::string> localizeCommand(const BatchConfig& cfg, const std::stri
     return a;
 }
 
-std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_dir, std::ostream& progress) {
+std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_dir, std::ostream& progress,
+                                bool terminal) {
     std::string bin = cfg.localize_bin;
     if (bin.empty()) bin = (fs::path(executableDir()) / "simp-localize").string();
     if (!fs::is_regular_file(bin))
@@ -172,7 +183,7 @@ std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_d
     std::atomic<std::size_t> next{0};
     std::size_t done = 0, resumed = 0;
     std::mutex mutex;
-    drawProgress(progress, 0, jobs.size(), 0);
+    drawProgress(progress, 0, jobs.size(), 0, terminal, nullptr);
     const auto worker = [&] {
         for (std::size_t i; (i = next++) < jobs.size();) {
             RunRecord r;
@@ -188,7 +199,7 @@ std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_d
             std::lock_guard<std::mutex> lock(mutex);
             records[i] = r;
             resumed += r.resumed ? 1 : 0;
-            drawProgress(progress, ++done, jobs.size(), resumed);
+            drawProgress(progress, ++done, jobs.size(), resumed, terminal, &r);
         }
     };
     std::vector<std::thread> pool;

@@ -12,9 +12,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iostream>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -139,7 +142,7 @@ int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
     }
     fs::create_directories(out_dir);
     err << "batch configuration (" << ini << "):\n" << cfg.dump();
-    const auto records = eval::runBatch(cfg, out_dir, err);
+    const auto records = eval::runBatch(cfg, out_dir, err, &err == &std::cerr && ::isatty(STDERR_FILENO));
     const auto summary = summarize(cfg, records);
     const std::string md = batchMarkdown(cfg, summary);
     writeText(fs::path(out_dir) / "tables.md", md);

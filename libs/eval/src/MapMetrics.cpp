@@ -97,13 +97,17 @@ MapMetrics evaluateMap(const world::ObjectMapData& ground_truth, const world::Ob
             if (!pred_used[r]) m.false_pred.push_back(preds[r]);
         m.per_class[name] = c;
     }
-    const double n = static_cast<double>(m.per_class.size());
     for (const auto& [name, c] : m.per_class) {
-        m.iou += c.iou / n;
-        m.iou_3d += c.iou_3d / n;
-        m.precision += c.precision / n;
-        m.recall += c.recall / n;
+        m.iou += c.iou;
+        m.iou_3d += c.iou_3d;
+        m.precision += c.precision;
+        m.recall += c.recall;
     }
+    const double n = static_cast<double>(m.per_class.size());
+    m.iou /= n;
+    m.iou_3d /= n;
+    m.precision /= n;
+    m.recall /= n;
     return m;
 }
 

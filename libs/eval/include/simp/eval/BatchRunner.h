@@ -43,10 +43,12 @@ std::vector<std::string> localizeCommand(const BatchConfig& cfg, const std::stri
                                          const BatchSequence& seq, const std::string& method, int seed,
                                          const std::string& run_dir);
 
-/// Executes (or resumes) every run; draws a progress bar on `progress`. Returns the records
+/// Executes (or resumes) every run; on `progress` a bar redrawn in place when `terminal`, else one
+/// line per finished run ("[3/8 runs] R1 simp seed 2: ok, success"). Returns the records
 /// in the order sequences x methods x seeds. A failing run is recorded, never thrown.
 /// \throw std::runtime_error when the simp-localize binary does not exist, or the world or a
 ///        sequence's groundtruth.tum / sequence.rawlog is missing (before anything runs).
-std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_dir, std::ostream& progress);
+std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_dir, std::ostream& progress,
+                                bool terminal = true);
 
 }  // namespace simp::eval
