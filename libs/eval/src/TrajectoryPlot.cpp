@@ -38,14 +38,14 @@ void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, doubl
     if (m.convergence_time_s) cv::line(img, px(*m.convergence_time_s, 0), px(*m.convergence_time_s, y_max), kConv, 2);
     if (m.divergence_time_s)
         cv::line(img, px(*m.divergence_time_s, 0), px(*m.divergence_time_s, y_max), cv::Scalar(0, 0, 255), 2);
-    cv::putText(img, label, {area.x + 6, area.y + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kBlack, 1, cv::LINE_AA);
+    cv::putText(img, label, {area.x, area.y - 5}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kBlack, 1, cv::LINE_AA);
 }
 
 }  // namespace
 
 cv::Mat3b drawErrorPlot(const TrajMetrics& m, const TrajMetricsParams& p, int width, int height) {
     cv::Mat3b img(height, width, cv::Vec3b(255, 255, 255));
-    const int left = 56, right = 16, top = 8, gap = 28, bottom = 34;
+    const int left = 56, right = 16, top = 22, gap = 40, bottom = 34;
     const int panel_h = (height - top - gap - bottom) / 2;
     const cv::Rect a(left, top, width - left - right, panel_h), b(left, top + panel_h + gap, width - left - right, panel_h);
     const auto yMax = [&](bool trans, double bound) {
