@@ -24,10 +24,12 @@ int lineCount(const fs::path& p) {
 }
 
 struct BatchFixture : ::testing::Test {
-    fs::path root = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_batch";
+    fs::path root;  // one folder per test: ctest may run the tests of this file in parallel
     fs::path ini;
 
     void SetUp() override {
+        root = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_batch" /
+               ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::remove_all(root);
         fs::create_directories(root / "world");
         for (const char* q : {"Q1", "Q2"}) {

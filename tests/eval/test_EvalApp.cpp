@@ -16,7 +16,13 @@ using nlohmann::json;
 
 namespace {
 
-const fs::path kDir = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_app";
+/// Output folder of the running test (ctest may run the tests of this file in parallel).
+fs::path testDir() {
+    const fs::path d = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_app" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::create_directories(d);
+    return d;
+}
 
 /// Runs EvalApp in-process; returns the exit code, standard output in `out`.
 int runApp(std::vector<std::string> args, std::string& out) {
@@ -69,7 +75,7 @@ simp::world::World smallWorld(double shift_m) {
 }  // namespace
 
 TEST(EvalApp, TrajInProcessPrintsSummaryAndJson) {
-    fs::create_directories(kDir);
+    const fs::path kDir = testDir();
     writeTrajectories(kDir / "gt.tum", kDir / "est.tum");
     std::string out;
     ASSERT_EQ(runApp({"traj", "--gt", (kDir / "gt.tum").string(), "--est", (kDir / "est.tum").string(), "--json",
@@ -86,7 +92,7 @@ TEST(EvalApp, TrajInProcessPrintsSummaryAndJson) {
 }
 
 TEST(EvalApp, RealBinaryTrajJsonAndExitCodes) {
-    fs::create_directories(kDir);
+    const fs::path kDir = testDir();
     writeTrajectories(kDir / "gt.tum", kDir / "est.tum");
     const std::string bin = std::string(SIMP_BINARY_DIR) + "/bin/simp-eval";
     ASSERT_TRUE(fs::exists(bin)) << bin;
@@ -113,6 +119,7 @@ TEST(EvalApp, RealBinaryTrajJsonAndExitCodes) {
 }
 
 TEST(EvalApp, MapAndPlotMapOnSavedWorlds) {
+    const fs::path kDir = testDir();
     const auto gt_dir = kDir / "gt_world", map_dir = kDir / "map_world";
     simp::world::saveWorld(smallWorld(0.0), gt_dir.string());
     // every object shifted 0.5 m along x: footprint IoU = 0.5 / 1.5 = 1/3 for each
@@ -133,6 +140,7 @@ TEST(EvalApp, MapAndPlotMapOnSavedWorlds) {
 }
 
 TEST(EvalApp, UsageErrors) {
+    const fs::path kDir = testDir();
     std::string out;
     EXPECT_THROW(runApp({"traj", "--gt"}, out), std::invalid_argument);
     EXPECT_THROW(runApp({"traj", "--est", "x"}, out), std::invalid_argument);  // --gt missing
@@ -145,6 +153,7 @@ TEST(EvalApp, UsageErrors) {
 }
 
 TEST(EvalApp, AuthorsGroundTruthMapAgainstItselfAndShifted) {
+    const fs::path kDir = testDir();
     const fs::path data = fs::path(SIMP_SHARED_DATA_DIR) / "simp-office";
     if (!fs::exists(data / "global_variance.json"))
         GTEST_SKIP() << "the authors' data is not at " << data << " (optional, read-only)";
