@@ -71,8 +71,11 @@ TEST(Plots, TrajectoryFigureShowsBothPathsAndWritesPng) {
     const cv::Mat back = cv::imread(png);
     EXPECT_EQ(back.size(), fig.size());
     // without a world: a blank canvas around the trajectories
+    // without a world: a blank canvas around the trajectories (x in [1, 9] m, y in [1, 4] m, 1 m
+    // margins, 1000 px / 8 m = 125 px/m), legend 300 px to the right
     const cv::Mat3b blank = drawTrajectoryFigure(gt, est, m, {}, nullptr);
-    EXPECT_GT(blank.cols, 300);
+    EXPECT_EQ(blank.cols, 10 * 125 + 300);
+    EXPECT_EQ(blank.rows, 5 * 125 + 320);
 }
 
 TEST(Plots, ObjectMapAndMapEvaluationColours) {

@@ -46,9 +46,9 @@ Canvas makeBlankCanvas(double x_min_m, double y_min_m, double x_max_m, double y_
     return c;
 }
 
-Canvas makeCanvasFor(const mrpt::maps::COccupancyGridMap2D& grid, double x_min_m, double y_min_m, double x_max_m,
+Canvas makeCanvasFor(const mrpt::maps::COccupancyGridMap2D* grid, double x_min_m, double y_min_m, double x_max_m,
                      double y_max_m) {
-    if (grid.getSizeX() > 0 && grid.getSizeY() > 0) return makeFloorplanCanvas(grid);
+    if (grid && grid->getSizeX() > 0 && grid->getSizeY() > 0) return makeFloorplanCanvas(*grid);
     const double extent = std::max({x_max_m - x_min_m, y_max_m - y_min_m, 1.0});
     return makeBlankCanvas(x_min_m, y_min_m, x_max_m, y_max_m, std::clamp(1000.0 / extent, 10.0, 200.0));
 }

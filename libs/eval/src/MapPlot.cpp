@@ -20,7 +20,7 @@ Canvas canvasFor(const world::World& w, const world::ObjectMapData* extra = null
         }
     }
     if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-    return makeCanvasFor(w.floorplan, x0, y0, x1, y1);
+    return makeCanvasFor(&w.floorplan, x0, y0, x1, y1);
 }
 
 }  // namespace

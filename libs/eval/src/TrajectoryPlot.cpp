@@ -71,8 +71,7 @@ cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& gt, const s
             x0 = std::min(x0, s.pose.x), y0 = std::min(y0, s.pose.y);
             x1 = std::max(x1, s.pose.x), y1 = std::max(y1, s.pose.y);
         }
-    const mrpt::maps::COccupancyGridMap2D empty_grid;
-    Canvas c = makeCanvasFor(world ? world->floorplan : empty_grid, x0, y0, x1, y1);
+    Canvas c = makeCanvasFor(world ? &world->floorplan : nullptr, x0, y0, x1, y1);
 
     std::vector<cv::Point> gt_px;
     for (const auto& s : gt) gt_px.push_back(c.toPixel(s.pose.x, s.pose.y));

@@ -33,8 +33,9 @@ Canvas makeFloorplanCanvas(const mrpt::maps::COccupancyGridMap2D& grid, int px_p
 Canvas makeBlankCanvas(double x_min_m, double y_min_m, double x_max_m, double y_max_m, double px_per_m,
                        double margin_m = 1.0, int legend_width_px = 300);
 
-/// Floor-plan canvas when the grid has cells, else a blank canvas over the given bounds.
-Canvas makeCanvasFor(const mrpt::maps::COccupancyGridMap2D& grid, double x_min_m, double y_min_m,
+/// Floor-plan canvas when `grid` is given and has cells, else a blank canvas over the given bounds
+/// (m). Note: a default-constructed COccupancyGridMap2D is not empty (MRPT gives it 40 m x 40 m).
+Canvas makeCanvasFor(const mrpt::maps::COccupancyGridMap2D* grid, double x_min_m, double y_min_m,
                      double x_max_m, double y_max_m);
 
 /// Legend entries (label, BGR colour) listed top-down in the legend panel.
