@@ -10,6 +10,7 @@
 #include <simp/localization/FreeSpace.h>
 #include <simp/localization/ObjectMcl.h>
 #include <simp/localization/RawlogSequence.h>
+#include <simp/localization/SkippedDetections.h>
 #include <simp/localization/TrajectoryImage.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
@@ -80,7 +81,7 @@ class RecordingOutput : public TCLAP::StdOutput {
 
 std::string describeError(const std::exception& e) {
     const std::string all = mrpt::exception_to_str(e);
-    if (all.find("Message:") == std::string::npos) return all;
+    if (all.find("Message:") == std::string::npos) return e.what();
     std::istringstream in(all);
     std::string out;
     for (std::string line; std::getline(in, line);) {
@@ -227,6 +228,7 @@ void LocalizeApp::run() {
     steps.clear();
     estimate.clear();
     mrpt::poses::CPose2D pending;  // odometry not yet applied to the particles
+    SkippedDetections skipped;     // detections of the frames since the last update
     const auto t_start = Clock::now();
     auto t_last_progress = t_start;
     const bool tty = isatty(fileno(stderr)) != 0;  // \r-updated line on a terminal, lines otherwise
@@ -241,17 +243,20 @@ void LocalizeApp::run() {
         rec.t_s = frame.t_s;
         if (trigger) {
             mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
+            const auto sf = skipped.merge(frame.observations, pending);
             if (f == 0 && pending.norm() == 0 && pending.phi() == 0) {
-                pf.executeOn(mcl, nullptr, frame.observations.get(), &stats);
+                pf.executeOn(mcl, nullptr, sf.get(), &stats);
             } else {
                 const auto acts = makeAction(pending, motion);
-                pf.executeOn(mcl, &acts, frame.observations.get(), &stats);
+                pf.executeOn(mcl, &acts, sf.get(), &stats);
             }
             pending = mrpt::poses::CPose2D();
             rec.updated = true;
             rec.detections = mcl.lastDetectionCount();
             rec.pruned = mcl.lastPrunedCount();
             rec.ess = stats.ESS_beforeResample * static_cast<double>(mcl.size());
+        } else if (experiment.keep_skipped_detections) {
+            skipped.add(*frame.observations, pending);
         }
         const ParticleSummary s = summarizeParticles(mcl, experiment);
         // The pose now: the filter's estimate moved by the odometry it has not applied yet.

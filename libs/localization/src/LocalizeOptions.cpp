@@ -81,6 +81,7 @@ void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     prune_outside_free_space = readBool(cfg, s, "prune_outside_free_space", prune_outside_free_space);
     update_min_d_xy = readPositive(cfg, s, "update_min_d_xy", update_min_d_xy, true);
     update_min_d_phi = readPositive(cfg, s, "update_min_d_phi", update_min_d_phi, true);
+    keep_skipped_detections = readBool(cfg, s, "keep_skipped_detections", keep_skipped_detections);
     const std::string mode = cfg.read_string(s, "estimate_mode", estimate_mode == EstimateMode::Cluster ? "cluster" : "mean");
     if (mode == "cluster")
         estimate_mode = EstimateMode::Cluster;
@@ -108,6 +109,7 @@ void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
         << "prune_outside_free_space = " << (prune_outside_free_space ? "true" : "false") << "\n"
         << "update_min_d_xy (m)      = " << update_min_d_xy << "\n"
         << "update_min_d_phi (rad)   = " << update_min_d_phi << "\n"
+        << "keep_skipped_detections  = " << (keep_skipped_detections ? "true" : "false") << "\n"
         << "estimate_mode            = " << (estimate_mode == EstimateMode::Cluster ? "cluster" : "mean") << "\n"
         << "cluster_radius_m         = " << cluster_radius_m << "\n"
         << "cluster_max_dphi (rad)   = " << cluster_max_dphi << "\n"
@@ -181,7 +183,7 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
     checkKnownKeys(cfg, kExperiment,
                    {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
-                    "update_min_d_xy", "update_min_d_phi", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
+                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
                     "cluster_cell_m", "cluster_phi_bins", "write_particles", "write_png"},
                    file);
     checkKnownKeys(cfg, kMotion,

@@ -28,6 +28,7 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
+    bool keep_skipped_detections = true;  ///< use the detections of skipped frames at the next update
     EstimateMode estimate_mode = EstimateMode::Cluster;
     double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
     double cluster_max_dphi = 0.7853981633974483;  ///< cluster: and within this heading difference (rad)
