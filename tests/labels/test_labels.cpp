@@ -55,8 +55,8 @@ world::World scene() {
                          object(2, 1, {3.0, 0.0, 0.5}, {0.8, 0.8, 1.0}, 0.0),
                          object(3, 2, {3.0, 2.4, 1.0}, {0.05, 1.0, 1.0}, 0.0),
                          object(4, 0, {8.0, -2.5, 0.5}, {0.6, 0.6, 1.0}, 0.0)};
-    w.floorplan.setSize(-2.0, 12.0, -6.0, 6.0, 0.05, 0.0f);  // free everywhere
-    for (double y = -3.0; y <= 0.0; y += 0.025) w.floorplan.setCell(w.floorplan.x2idx(6.05), w.floorplan.y2idx(y), 1.0f);
+    w.floorplan.setSize(-2.0, 12.0, -6.0, 6.0, 0.05, 1.0f);  // free everywhere (MRPT cell value = P(free))
+    for (double y = -3.0; y <= 0.0; y += 0.025) w.floorplan.setCell(w.floorplan.x2idx(6.05), w.floorplan.y2idx(y), 0.0f);  // wall
     return w;
 }
 

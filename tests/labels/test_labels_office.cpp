@@ -20,7 +20,7 @@ const std::string kOffice = std::string(SIMP_SHARED_DATA_DIR) + "/simp-office";
 bool freeCell(const mrpt::maps::COccupancyGridMap2D& g, double x, double y) {
     const int cx = g.x2idx(x), cy = g.y2idx(y);
     return cx >= 0 && cy >= 0 && cx < static_cast<int>(g.getSizeX()) && cy < static_cast<int>(g.getSizeY()) &&
-           g.getCell(cx, cy) < 0.3f;
+           g.getCell(cx, cy) > 0.7f;  // MRPT cell value = P(free)
 }
 
 }  // namespace

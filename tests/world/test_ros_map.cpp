@@ -49,15 +49,15 @@ TEST(RosMap, TrinaryThresholdsRowOrderAndExactOrigin) {
     EXPECT_FLOAT_EQ(g.getYMin(), -11.04537f);
     EXPECT_FLOAT_EQ(g.getXMax(), static_cast<float>(-13.9155 + 4 * 0.05));
     // Image row 0 (top) is grid row cy = 2.
-    EXPECT_GT(g.getCell(0, 2), 0.99f);           // v = 0
-    EXPECT_GT(g.getCell(1, 2), 0.99f);           // v = 89, p = 0.651 > 0.65
+    EXPECT_LT(g.getCell(0, 2), 0.01f);           // v = 0
+    EXPECT_LT(g.getCell(1, 2), 0.01f);           // v = 89, p = 0.651 > 0.65
     EXPECT_FLOAT_EQ(g.getCell(2, 2), 0.5f);      // v = 90, p = 0.647
     EXPECT_FLOAT_EQ(g.getCell(3, 2), 0.5f);      // v = 205, p = 0.19608
-    EXPECT_LT(g.getCell(0, 1), 0.01f);           // v = 206, p = 0.192 < 0.196
-    EXPECT_LT(g.getCell(0, 0), 0.01f);           // bottom-left, v = 255
-    EXPECT_GT(g.getCell(3, 0), 0.99f);           // bottom-right, v = 0
+    EXPECT_GT(g.getCell(0, 1), 0.99f);           // v = 206, p = 0.192 < 0.196
+    EXPECT_GT(g.getCell(0, 0), 0.99f);           // bottom-left, v = 255
+    EXPECT_LT(g.getCell(3, 0), 0.01f);           // bottom-right, v = 0
     // World lookup honours the origin: the bottom-right cell's centre.
-    EXPECT_GT(g.getPos(-13.9155f + 3.5f * 0.05f, -11.04537f + 0.5f * 0.05f), 0.99f);
+    EXPECT_LT(g.getPos(-13.9155f + 3.5f * 0.05f, -11.04537f + 0.5f * 0.05f), 0.01f);
 }
 
 TEST(RosMap, NegateInvertsTheImage) {
@@ -65,12 +65,12 @@ TEST(RosMap, NegateInvertsTheImage) {
     mrpt::maps::COccupancyGridMap2D g;
     // With negate = 1, p = v / 255: the inverted image gives the same grid.
     loadRosMap(writeMap(dir, std::string("negate: 1\n") + kThresholds, true), g);
-    EXPECT_GT(g.getCell(0, 2), 0.99f);
-    EXPECT_GT(g.getCell(1, 2), 0.99f);
+    EXPECT_LT(g.getCell(0, 2), 0.01f);
+    EXPECT_LT(g.getCell(1, 2), 0.01f);
     EXPECT_FLOAT_EQ(g.getCell(2, 2), 0.5f);
     EXPECT_FLOAT_EQ(g.getCell(3, 2), 0.5f);
-    EXPECT_LT(g.getCell(0, 1), 0.01f);
-    EXPECT_LT(g.getCell(0, 0), 0.01f);
+    EXPECT_GT(g.getCell(0, 1), 0.99f);
+    EXPECT_GT(g.getCell(0, 0), 0.99f);
 }
 
 TEST(RosMap, OtherThresholdsMoveTheClasses) {
@@ -79,7 +79,7 @@ TEST(RosMap, OtherThresholdsMoveTheClasses) {
     loadRosMap(writeMap(dir, "negate: 0\noccupied_thresh: 0.9\nfree_thresh: 0.1\n"), g);
     EXPECT_FLOAT_EQ(g.getCell(1, 2), 0.5f);  // p = 0.651: no longer occupied
     EXPECT_FLOAT_EQ(g.getCell(0, 1), 0.5f);  // p = 0.192: no longer free
-    EXPECT_GT(g.getCell(0, 2), 0.99f);
+    EXPECT_LT(g.getCell(0, 2), 0.01f);
 }
 
 TEST(RosMap, ScaleModeKeepsIntermediateValues) {
@@ -87,7 +87,7 @@ TEST(RosMap, ScaleModeKeepsIntermediateValues) {
     mrpt::maps::COccupancyGridMap2D g;
     loadRosMap(writeMap(dir, std::string("mode: scale\n") + kThresholds), g);
     // v = 90: p = 165/255; occupancy = (p - 0.196) / (0.65 - 0.196).
-    EXPECT_NEAR(g.getCell(2, 2), (165.0 / 255.0 - 0.196) / (0.65 - 0.196), 0.01);
+    EXPECT_NEAR(1.0 - g.getCell(2, 2), (165.0 / 255.0 - 0.196) / (0.65 - 0.196), 0.01);  // MRPT stores P(free)
 }
 
 TEST(RosMap, SaveLoadRoundTrip) {

@@ -135,8 +135,8 @@ TEST(SimpImport, HandMadeExample) {
     ASSERT_EQ(w.floorplan.getSizeY(), 20u);
     EXPECT_FLOAT_EQ(w.floorplan.getXMin(), -1.23f);
     EXPECT_FLOAT_EQ(w.floorplan.getYMin(), -0.77f);
-    EXPECT_GT(w.floorplan.getCell(0, 0), 0.99f);     // wall corner
-    EXPECT_LT(w.floorplan.getCell(5, 5), 0.01f);     // free inside
+    EXPECT_LT(w.floorplan.getCell(0, 0), 0.01f);     // wall corner
+    EXPECT_GT(w.floorplan.getCell(5, 5), 0.99f);     // free inside
     EXPECT_FLOAT_EQ(w.floorplan.getCell(27, 18), 0.5f);  // unknown block (image rows 1-2, cols 26-28)
     ASSERT_EQ(w.objects.class_names.size(), 14u);
     EXPECT_TRUE(w.objects.class_noise[4].has_value());
@@ -411,8 +411,8 @@ TEST(SimpOffice, ImportMatchesThePublishedFiles) {
     for (unsigned y = 0; y < 280; ++y)
         for (unsigned x = 0; x < 521; ++x) {
             const float c = w.floorplan.getCell(x, y);
-            occ += c > 0.99f;
-            fre += c < 0.01f;
+            occ += c < 0.01f;  // MRPT stores P(free)
+            fre += c > 0.99f;
         }
     EXPECT_EQ(occ, 9043);   // pixels with value 0 in Map.png
     EXPECT_EQ(fre, 86921);  // pixels with value 255

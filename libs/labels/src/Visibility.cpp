@@ -32,7 +32,7 @@ WallGrid makeWallGrid(const mrpt::maps::COccupancyGridMap2D& g, const std::vecto
     w.wall.assign(static_cast<std::size_t>(w.nx) * w.ny, 0);
     for (int cy = 0; cy < w.ny; ++cy)
         for (int cx = 0; cx < w.nx; ++cx)
-            w.wall[static_cast<std::size_t>(cy) * w.nx + cx] = g.getCell(cx, cy) >= o.occupied_threshold ? 1 : 0;
+            w.wall[static_cast<std::size_t>(cy) * w.nx + cx] = 1.0 - g.getCell(cx, cy) >= o.occupied_threshold ? 1 : 0;  // MRPT stores P(free)
     if (o.ignore_object_cells) {
         const double r = g.getResolution();
         for (const auto& b : boxes) {

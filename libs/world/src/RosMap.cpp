@@ -147,7 +147,8 @@ void loadRosMap(const std::string& yaml_path, mrpt::maps::COccupancyGridMap2D& g
             else if (p < m.free_thresh) occ = 0.0f;
             else if (m.mode == "scale" && m.occupied_thresh > m.free_thresh)
                 occ = static_cast<float>((p - m.free_thresh) / (m.occupied_thresh - m.free_thresh));
-            grid.setCell(c, cy, occ);
+            // MRPT's cell value is the probability of being FREE (0 = occupied, 1 = free).
+            grid.setCell(c, cy, 1.0f - occ);
         }
     }
 }
@@ -161,7 +162,7 @@ void saveRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& 
     cv::Mat1b img(static_cast<int>(rows), static_cast<int>(cols));
     for (unsigned cy = 0; cy < rows; ++cy)
         for (unsigned cx = 0; cx < cols; ++cx) {
-            const float occ = grid.getCell(static_cast<int>(cx), static_cast<int>(cy));
+            const float occ = 1.0f - grid.getCell(static_cast<int>(cx), static_cast<int>(cy));  // MRPT stores P(free)
             const uchar v = occ >= 0.65f ? 0 : (occ <= 0.196f ? 254 : 205);
             img(static_cast<int>(rows - 1 - cy), static_cast<int>(cx)) = v;
         }

@@ -14,7 +14,7 @@ namespace simp::labels {
 
 struct VisibilityOptions {
     int pixel_step = 4;                  ///< one ray every pixel_step px in u and v
-    double occupied_threshold = 0.65;    ///< grid cells with occupancy >= this are walls
+    double occupied_threshold = 0.65;    ///< cells with occupancy (1 - MRPT's P(free) cell value) >= this are walls
     bool ignore_object_cells = true;     ///< cells under an object's footprint (+ margin) are not walls
     double object_cell_margin_m = 0.10;  ///< margin around the footprint for ignore_object_cells (m)
     double max_range_m = 30.0;           ///< rays stop here
