@@ -4,8 +4,8 @@
 ///
 /// Conventions (doc/conventions.md; algorithms in doc/geometry.md):
 ///  - `center` is the box centre in the frame the box is expressed in (m).
-///  - `size` = (W, H, L): extents along the box's own x, y, z axes (m), as the
-///    Omni3D / Cube R-CNN `dimensions` field.
+///  - `size` = (W, H, L): extents along the box's own x, y, z axes (m). (Omni3D's
+///    `dimensions` put L along x and W along z: see doc/conventions.md.)
 ///  - `R` rotates box-axis coordinates into the frame: p_frame = center + R * p_box.
 ///  - Corner i (0..7) = center + R * (sx W/2, sy H/2, sz L/2) with
 ///    sx = (i & 1) ? +1 : -1, sy = (i & 2) ? +1 : -1, sz = (i & 4) ? +1 : -1.
