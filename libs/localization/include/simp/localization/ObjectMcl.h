@@ -29,7 +29,7 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// `map` must stay alive as long as the filter (it is shared with options.metricMap).
     explicit ObjectMcl(std::shared_ptr<const maps::CObjectMap> map, std::size_t num_particles = 1);
 
-    /// Enables pruning against `free_space` (pass an empty FreeSpace-less call to disable).
+    /// The free space used for pruning (nullptr, the default, or prune_outside_free_space = false: no pruning).
     void setFreeSpace(std::shared_ptr<const FreeSpace> free_space) { m_free_space = std::move(free_space); }
     bool prune_outside_free_space = true;
 
