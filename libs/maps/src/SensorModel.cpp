@@ -8,6 +8,14 @@
 namespace simp::maps {
 namespace {
 
+/// out = R(c, s) in + t, written into a caller's polygon (no construction per particle).
+inline void transformInto(const geometry::ConvexPolygon& in, double c, double s, double tx, double ty,
+                          geometry::ConvexPolygon& out) {
+    out.n = in.n;
+    for (std::size_t i = 0; i < in.n; ++i)
+        out.v[i] = Eigen::Vector2d(c * in.v[i].x() - s * in.v[i].y() + tx, s * in.v[i].x() + c * in.v[i].y() + ty);
+}
+
 bool needsProbabilityMap(SensorModelType t) { return t == SensorModelType::Simp || t == SensorModelType::D; }
 
 void checkParams(const SensorModelParams& p) {
@@ -58,7 +66,8 @@ std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geome
 // ----------------------------------------------------------------------------------------------
 // Per (pose, detection) kernels. The robot pose is (c, s) = (cos phi, sin phi) and t = (tx, ty).
 template <SensorModelType T>
-double SensorModel::kernel(const PreparedDetection& det, double c, double s, double tx, double ty) const {
+double SensorModel::kernel(const PreparedDetection& det, double c, double s, double tx, double ty,
+                           geometry::ConvexPolygon& fp) const {
     // Detection centre in the world for this pose.
     const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
     const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
@@ -76,7 +85,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
             double p_g = m_exp_minus_1;  // IoU = 0
             const Eigen::Vector2d wc(wx, wy);
             if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
-                const auto fp = det.footprint_robot.transformed(c, s, Eigen::Vector2d(tx, ty));
+                transformInto(det.footprint_robot, c, s, tx, ty, fp);
                 p_g = std::exp(iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2) - 1.0);
             }
             return std::log(hit.p * p_g + (1.0 - hit.p) * eta);  // Eq. combined
@@ -86,12 +95,11 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
         const Eigen::Vector2d wc(wx, wy);
         double best_iou = 0.0;
         bool transformed = false;
-        geometry::ConvexPolygon fp;
         for (const std::int32_t o : m_footprints.class_objects[static_cast<std::size_t>(det.map_class)]) {
             const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(o)];
             if (!circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) continue;
             if (!transformed) {
-                fp = det.footprint_robot.transformed(c, s, Eigen::Vector2d(tx, ty));
+                transformInto(det.footprint_robot, c, s, tx, ty, fp);
                 transformed = true;
             }
             best_iou = std::max(best_iou, iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2));
@@ -110,22 +118,24 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
 template <SensorModelType T>
 void SensorModel::accumulate(const PreparedDetection* dets, std::size_t num_dets, const mrpt::math::TPose2D* poses,
                              std::size_t n, double* sum_log) const {
+    geometry::ConvexPolygon scratch;  // transformed footprint, reused for every pair
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = poses[i];
         const double c = std::cos(p.phi), s = std::sin(p.phi);
         double acc = 0.0;
-        for (std::size_t k = 0; k < num_dets; ++k) acc += kernel<T>(dets[k], c, s, p.x, p.y);
+        for (std::size_t k = 0; k < num_dets; ++k) acc += kernel<T>(dets[k], c, s, p.x, p.y, scratch);
         sum_log[i] += acc;
     }
 }
 
 double SensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
     const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+    geometry::ConvexPolygon fp;
     switch (m_params.type) {
-        case SensorModelType::Simp: return kernel<SensorModelType::Simp>(det, c, s, pose.x, pose.y);
-        case SensorModelType::Edt: return kernel<SensorModelType::Edt>(det, c, s, pose.x, pose.y);
-        case SensorModelType::D: return kernel<SensorModelType::D>(det, c, s, pose.x, pose.y);
-        case SensorModelType::O: return kernel<SensorModelType::O>(det, c, s, pose.x, pose.y);
+        case SensorModelType::Simp: return kernel<SensorModelType::Simp>(det, c, s, pose.x, pose.y, fp);
+        case SensorModelType::Edt: return kernel<SensorModelType::Edt>(det, c, s, pose.x, pose.y, fp);
+        case SensorModelType::D: return kernel<SensorModelType::D>(det, c, s, pose.x, pose.y, fp);
+        case SensorModelType::O: return kernel<SensorModelType::O>(det, c, s, pose.x, pose.y, fp);
     }
     return 0.0;
 }

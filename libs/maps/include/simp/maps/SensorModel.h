@@ -55,7 +55,8 @@ class SensorModel {
 
    private:
     template <SensorModelType T>
-    double kernel(const PreparedDetection& det, double c, double s, double tx, double ty) const;
+    double kernel(const PreparedDetection& det, double c, double s, double tx, double ty,
+                  geometry::ConvexPolygon& scratch) const;
     template <SensorModelType T>
     void accumulate(const PreparedDetection* dets, std::size_t num_dets, const mrpt::math::TPose2D* poses,
                     std::size_t n, double* sum_log) const;
