@@ -51,8 +51,10 @@ TEST(ObjectMapBuilder, StaticSceneConvergesToTheTrueBoxes) {
     }
     b.flush();
     const auto& m = b.map();
+    // Each true object collects ~100 detections; duplicates made by early noisy detections are
+    // merged or purged, or stay transient with few detections.
     int confirmed = 0;
-    for (const auto& o : m.objects) confirmed += o.n_match >= 5;
+    for (const auto& o : m.objects) confirmed += o.n_match >= 20;
     EXPECT_EQ(confirmed, static_cast<int>(truth.size()));
     for (const auto& t : truth) {
         const auto* o = closest(m, t.class_id, t.box.center);
@@ -112,7 +114,7 @@ TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
     }
     b.flush();
     int chairs = 0;
-    for (const auto& o : b.map().objects) chairs += o.class_id == 2 && o.n_match >= 5;
+    for (const auto& o : b.map().objects) chairs += o.class_id == 2 && o.n_match >= 10;
     EXPECT_EQ(chairs, 2);
     for (const auto& t : truth) {
         const auto* o = closest(b.map(), 2, t.box.center);

@@ -33,7 +33,9 @@ void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room,
         // Room policy: only objects of the robot's current room are updated (room 0 = unknown: any).
         if (current_room != 0 && o.room_id != 0 && o.room_id != current_room) continue;
         const BoxView& v = m_views_scratch[k];
-        if (v.visible_px <= 0) continue;
+        // Candidate: in the frustum and not completely behind walls (other boxes may hide it:
+        // nested boxes such as a sink in a counter are still detected).
+        if (v.unwalled_px <= 0) continue;
         candidate[k] = true;
         const ClassFilter& f = m_options.filterOf(m_g.class_names[o.class_id]);
         const bool in_range = f.max_range_m > 0 && v.distance_m >= f.min_range_m && v.distance_m <= f.max_range_m;

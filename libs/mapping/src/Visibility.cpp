@@ -59,6 +59,10 @@ void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int o
                     m_stamp[idx] = object;
                     ++(*m_out)[object].covered_px;
                 }
+                if (z < m_wall_depth[idx] && m_stamp_unwalled[idx] != object) {
+                    m_stamp_unwalled[idx] = object;
+                    ++(*m_out)[object].unwalled_px;
+                }
                 if (z < m_depth[idx]) {
                     m_depth[idx] = z;
                     m_id[idx] = object;
@@ -77,6 +81,7 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
     m_depth.assign(npx, std::numeric_limits<float>::infinity());
     m_id.assign(npx, -1);
     m_stamp.assign(npx, -1);
+    m_stamp_unwalled.assign(npx, -1);
     out.assign(boxes.size(), BoxView{});
     m_out = &out;
 
@@ -103,6 +108,8 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
             }
         }
     }
+
+    m_wall_depth = m_depth;  // walls only, before the boxes
 
     std::array<Eigen::Vector3d, 8> c_cam;
     std::array<Eigen::Vector3d, 8> face_in, face_clip, face_px;

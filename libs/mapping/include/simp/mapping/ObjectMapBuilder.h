@@ -81,7 +81,8 @@ class ObjectMapBuilder {
 
     /// Visibility of the map objects in one camera (exposed for tests): per map object, true
     /// when active (I_active = 1: in the frustum and range, not truncated, not occluded, in the
-    /// current room) and true when an association candidate (some pixel visible).
+    /// current room) and true when an association candidate (in the current room, some projected
+    /// pixel in the image and not behind a wall; other boxes may hide it).
     void visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
                     std::vector<bool>& candidate);
 

@@ -24,6 +24,7 @@ struct PinholeCamera {
 struct BoxView {
     int covered_px = 0;             ///< z-buffer pixels the box covers inside the image (any depth)
     int visible_px = 0;             ///< of those, pixels where it is the front-most surface and not behind a wall
+    int unwalled_px = 0;            ///< covered pixels not behind a wall (other boxes ignored)
     double truncated_fraction = 1;  ///< fraction of its projected 2D bounding box outside the image, [0, 1]
     double distance_m = 0;          ///< camera centre -> box centre (m)
 
@@ -54,6 +55,8 @@ class VisibilityRenderer {
     std::vector<float> m_depth;   ///< nearest depth per pixel (camera z, m)
     std::vector<int> m_id;        ///< front-most box per pixel, -1 = wall / nothing
     std::vector<int> m_stamp;     ///< last box that covered a pixel (dedupes its faces)
+    std::vector<int> m_stamp_unwalled;  ///< last box that covered a pixel in front of the wall
+    std::vector<float> m_wall_depth;    ///< wall depth + margin per pixel (camera z, m)
     std::vector<BoxView>* m_out = nullptr;
 };
 
