@@ -132,6 +132,30 @@ void run(benchmark::State& state, simp::maps::SensorModelType type, bool global)
         benchmark::ClobberMemory();
     }
     const double pairs = static_cast<double>(poses.size() * used);
+    // Where the time goes: fraction of pairs whose centre falls in an m_p support (p_o > 0),
+    // and fraction that also needs the polygon clipping (bounding circles overlap).
+    if (type == simp::maps::SensorModelType::Simp) {
+        const auto model = map.sensorModel();
+        std::size_t hits = 0, clips = 0;
+        for (std::size_t k = 0; k < obs.size(); ++k) {
+            const auto& det = obs.detections()[k];
+            const int cls = bm.data.classId(obs.classNameOf(det));
+            const auto prepared = model->prepare(cls, obs.boxInRobot(k), obs.footprintInRobot(k));
+            if (!prepared) continue;
+            for (const auto& p : poses) {
+                const double c = std::cos(p.phi), s = std::sin(p.phi);
+                const Eigen::Vector2d w(c * prepared->center_robot_m.x() - s * prepared->center_robot_m.y() + p.x,
+                                        s * prepared->center_robot_m.x() + c * prepared->center_robot_m.y() + p.y);
+                const auto hit = model->probabilityMap().lookup(cls, w.x(), w.y());
+                if (hit.object < 0) continue;
+                ++hits;
+                const auto& of = model->footprints().objects[static_cast<std::size_t>(hit.object)];
+                if (simp::maps::circlesOverlap(w, prepared->radius_m, of.circle_center_m, of.circle_radius_m)) ++clips;
+            }
+        }
+        state.counters["hit_frac"] = static_cast<double>(hits) / pairs;
+        state.counters["clip_frac"] = static_cast<double>(clips) / pairs;
+    }
     // Seconds per (particle x detection): printed with an SI prefix, e.g. "40n" = 40 ns.
     state.counters["time_per_pair"] =
         benchmark::Counter(pairs, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
