@@ -8,8 +8,9 @@
 namespace simp::maps {
 namespace {
 
-/// Detections processed per batch on the stack (no heap allocation in the batch path).
-constexpr std::size_t kBatch = 32;
+/// Detections processed per batch on the stack (no heap allocation in the batch path); small
+/// enough that the per-call setup stays cheap for MRPT's one-pose-per-call interface.
+constexpr std::size_t kBatch = 16;
 
 mrpt::math::TPose2D toPose2D(const mrpt::poses::CPose3D& p) { return {p.x(), p.y(), p.yaw()}; }
 
