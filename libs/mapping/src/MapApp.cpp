@@ -115,6 +115,7 @@ void MapApp::run() {
     for (std::size_t f = 0; f < frames.size(); ++f) {
         const obs::RawlogFrame& fr = frames[f];
         if (fr.odometry_increment) odom_pose = odom_pose + mrpt::poses::CPose2D(*fr.odometry_increment);
+        if (fr.observations.empty()) continue;  // an odometry-only entry (actions at a higher rate)
         mrpt::math::TPose2D pose2d;
         if (m_args.odometry_only) {
             pose2d = odom_pose.asTPose();
