@@ -51,6 +51,14 @@ void readInt(const mrpt::config::CConfigFileBase& c, const std::string& section,
     value = static_cast<int>(v);
 }
 
+void readBool(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, bool& value) {
+    const std::string text = trim(c.read_string(section, key, "", false));
+    if (text == "true" || text == "1") value = true;
+    else if (text == "false" || text == "0") value = false;
+    else if (!text.empty())
+        throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "': expected true or false");
+}
+
 // The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist).
 struct AuthorsRow {
     const char* name;
@@ -105,15 +113,8 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_cost", tau_cost);
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
-    {
-        int merge = merge_duplicates ? 1 : 0;
-        const std::string text = trim(c.read_string(s, "merge_duplicates", "", false));
-        if (text == "true" || text == "1") merge = 1;
-        else if (text == "false" || text == "0") merge = 0;
-        else if (!text.empty())
-            throw std::invalid_argument("mapping option [" + s + "] merge_duplicates = '" + text + "': expected true or false");
-        merge_duplicates = merge != 0;
-    }
+    readBool(c, s, "merge_duplicates", merge_duplicates);
+    readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
     readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
     readDouble(c, s, "truncation_threshold", truncation_threshold);
     readDouble(c, s, "max_occluded_fraction", max_occluded_fraction);
@@ -192,6 +193,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
+    o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
     o << "truncation_threshold  = " << truncation_threshold << "\n";
     o << "max_occluded_fraction = " << max_occluded_fraction << "\n";

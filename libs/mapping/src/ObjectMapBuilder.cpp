@@ -87,15 +87,29 @@ int ObjectMapBuilder::mapClassOf(const std::string& name) {
     return static_cast<int>(m_g.class_names.size()) - 1;
 }
 
-world::NoiseModel ObjectMapBuilder::noiseOfClass(int class_id) const {
-    if (class_id >= 0 && static_cast<std::size_t>(class_id) < m_g.class_noise.size()) {
-        const auto& n = m_g.class_noise[class_id];
-        if (n && n->isValid()) return *n;
+world::NoiseModel ObjectMapBuilder::costNoise(const std::optional<world::NoiseModel>& model) const {
+    world::NoiseModel n;
+    if (model && model->isValid()) {
+        n = *model;
+    } else {  // classes without a model: isotropic Gaussian
+        n.cov_m2 = Eigen::Matrix2d::Identity() * m_options.default_noise_sigma_m * m_options.default_noise_sigma_m;
+        n.exponent_b = 2.0;
     }
-    world::NoiseModel fallback;  // classes without a model: isotropic Gaussian
-    fallback.cov_m2 = Eigen::Matrix2d::Identity() * m_options.default_noise_sigma_m * m_options.default_noise_sigma_m;
-    fallback.exponent_b = 2.0;
-    return fallback;
+    // Both objects of the cost are predictions (a map / local object is a mean of detections):
+    // the detector's bias mu cancels in their difference.
+    if (!m_options.cost_uses_noise_mean) n.mean_m.setZero();
+    return n;
+}
+
+world::NoiseModel ObjectMapBuilder::noiseOfClass(int class_id) const {
+    if (class_id >= 0 && static_cast<std::size_t>(class_id) < m_g.class_noise.size())
+        return costNoise(m_g.class_noise[class_id]);
+    return costNoise(std::nullopt);
+}
+
+world::NoiseModel ObjectMapBuilder::noiseOfObject(const world::MapObject& o) const {
+    if (o.noise && o.noise->isValid()) return costNoise(o.noise);
+    return noiseOfClass(o.class_id);
 }
 
 PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const {

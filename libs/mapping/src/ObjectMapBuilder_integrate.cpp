@@ -83,10 +83,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
                 if (removed[i] || removed[j] || m_g.objects[i].class_id != m_g.objects[j].class_id) continue;
                 const std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
                 const std::size_t o = r == i ? j : i;
-                const auto noise = m_g.noiseOf(m_g.objects[r]);
-                const double c = associationCost(m_g.objects[r].box,
-                                                 noise && noise->isValid() ? *noise : noiseOfClass(m_g.objects[r].class_id),
-                                                 m_g.objects[o].box);
+                const double c = associationCost(m_g.objects[r].box, noiseOfObject(m_g.objects[r]), m_g.objects[o].box);
                 if (c < best) best = c, keep = r, drop = o;
             }
         if (best >= m_options.tau_cost) break;
@@ -139,9 +136,7 @@ void ObjectMapBuilder::flush() {
                     cost(r, c) = kForbiddenCost;
                     continue;
                 }
-                const auto noise = m_g.noiseOf(o);
-                cost(r, c) = associationCost(o.box, noise && noise->isValid() ? *noise : noiseOfClass(o.class_id),
-                                             locals[r]->box);
+                cost(r, c) = associationCost(o.box, noiseOfObject(o), locals[r]->box);
             }
         assignment = geometry::solveAssignment(cost);
     }

@@ -42,6 +42,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.
     bool merge_duplicates = true;
+    /// Use the class noise mean mu in C_cen. Default false: both objects of the cost are
+    /// predictions, so the detector's bias cancels (and mu's direction depends on which of the 4
+    /// equivalent box frames an object has).
+    bool cost_uses_noise_mean = false;
     double default_noise_sigma_m = 0.2;  ///< isotropic sigma (m, b = 2) of C_cen for classes without a noise model
     /// @}
 

@@ -88,7 +88,11 @@ class ObjectMapBuilder {
 
    private:
     int mapClassOf(const std::string& name);
+    /// The noise model used in C_cen (Eq. costfunc): the given model (else the isotropic default),
+    /// with its mean zeroed unless cost_uses_noise_mean.
+    world::NoiseModel costNoise(const std::optional<world::NoiseModel>& model) const;
     world::NoiseModel noiseOfClass(int class_id) const;
+    world::NoiseModel noiseOfObject(const world::MapObject& o) const;
     void insertIntoLocalMap(const std::vector<LocalObject>& detections);
     void mergeLocalDuplicates();
     /// Merges duplicates among the map objects with the given ids; returns how many were removed.
