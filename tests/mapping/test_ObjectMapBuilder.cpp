@@ -210,3 +210,30 @@ TEST(ObjectMapBuilder, InvalidMapIsRejected) {
     m.objects[0].box.center.x() = std::nan("");
     EXPECT_THROW(b.setMap(m), std::invalid_argument);
 }
+
+TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
+    // A class model with a 0.5 m bias and 0.1 m sigma: with mu in C_cen two identical detections
+    // would cost 0.5 * (1 - exp(-0.5 * 25)) ~ 0.5 > tau_cost and never merge.
+    auto m0 = emptyMap();
+    simp::world::NoiseModel biased;
+    biased.mean_m = {0.5, 0.0};
+    biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
+    m0.class_noise[1] = biased;
+    const std::vector<test::TrueObject> truth = {{1, makeUprightBox({3.0, 0.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)}};
+    auto run = [&](bool use_mean) {
+        auto opts = test::testOptions();
+        opts.cost_uses_noise_mean = use_mean;
+        opts.merge_duplicates = false;
+        ObjectMapBuilder b(opts);
+        b.setMap(m0);
+        std::mt19937 rng(1);
+        for (const double x : {0.0, 0.3}) {  // two windows, exact detections
+            const mrpt::poses::CPose3D pose(x, 0, 0, 0, 0, 0);
+            insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+        }
+        b.flush();
+        return b.map().objects.size();
+    };
+    EXPECT_EQ(run(false), 1u);
+    EXPECT_EQ(run(true), 2u);
+}
