@@ -40,7 +40,7 @@ bool MapApp::initialize(int argc, const char* const* argv) {
     }
     std::vector<const char*> v(argv, argv + argc);
     if (!cmd.parse(argc, v.data()))
-        throw std::invalid_argument("simp-map: bad command line (the parser's message is above); see --help");
+        throw std::invalid_argument("bad command line (the parser's message is above); see --help");
     MapAppArgs a;
     a.world_dir = world.getValue();
     a.rawlog_path = rawlog.getValue();
@@ -57,7 +57,7 @@ void MapApp::initialize(const MapAppArgs& args) {
     if (!fs::is_directory(args.world_dir)) throw std::runtime_error("world directory '" + args.world_dir + "' does not exist");
     if (!fs::exists(args.rawlog_path)) throw std::runtime_error("rawlog '" + args.rawlog_path + "' does not exist");
     if (!fs::exists(args.poses_path)) throw std::runtime_error("poses file '" + args.poses_path + "' does not exist");
-    if (args.out_dir.empty()) throw std::invalid_argument("simp-map: --out must not be empty");
+    if (args.out_dir.empty()) throw std::invalid_argument("--out must not be empty");
     MappingOptions opts;
     if (!args.config_path.empty()) {
         if (!fs::exists(args.config_path)) throw std::runtime_error("config file '" + args.config_path + "' does not exist");
@@ -138,7 +138,7 @@ void MapApp::run() {
         out << "simp-map: warning: " << m_frames_without_pose
             << " frames outside the time span of the poses file were skipped\n";
     if (m_frames_mapped == 0)
-        throw std::runtime_error("simp-map: no frame of '" + m_args.rawlog_path + "' has a pose in '" + m_args.poses_path +
+        throw std::runtime_error("no frame of '" + m_args.rawlog_path + "' has a pose in '" + m_args.poses_path +
                                  "' (timestamps do not overlap)");
 
     // Output world M: floor plan and rooms used + the built objects.
