@@ -74,7 +74,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// @name Rooms
     /// @{
     RoomUpdatePolicy room_policy = RoomUpdatePolicy::CurrentRoom;
-    double room_door_width_m = 1.0;      ///< erosion removes openings up to this width (m)
+    double room_door_width_m = 1.5;      ///< erosion removes openings up to this width (m)
     double room_min_area_m2 = 1.0;       ///< eroded components smaller than this are not rooms (m^2)
     double room_search_radius_m = 0.5;   ///< a point in a wall / furniture cell takes the nearest room within this (m)
     /// @}
