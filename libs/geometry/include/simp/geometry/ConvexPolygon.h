@@ -48,7 +48,7 @@ double intersectionArea(const ConvexPolygon& a, const ConvexPolygon& b);
 /// IoU of two convex polygons in [0, 1]; 0 when either is degenerate (zero area),
 /// NaN when a vertex is NaN (callers check with MRPT_CHECK_NORMAL_NUMBER or std::isfinite).
 /// Hot path of the sensor model (Eq. iouscore): no heap; about 45-50 ns for two overlapping
-/// rectangles, 15 ns when disjoint (benchmarks/geometry/bench_geometry.cpp).
+/// rectangles, 15 ns when disjoint (tests/benchmarks/geometry/bench_geometry.cpp).
 double iou(const ConvexPolygon& a, const ConvexPolygon& b);
 
 }  // namespace simp::geometry
