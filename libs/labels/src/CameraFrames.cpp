@@ -14,15 +14,15 @@ namespace {
 /// Fills K, size and pose of `im` from the rig camera and the interpolated robot pose.
 void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
                  const std::vector<io::StampedPose2D>* poses, const std::string& path, const std::string& k) {
-    const std::string cam = detail::text(o["camera"], path, k + ".camera");
+    const std::string cam = world::asString(o["camera"], path, k + ".camera");
     if (!rig || !poses)
-        detail::fail(path, k + ".camera", "an image given by camera name needs --rig and --poses");
+        world::failAt(path, k + ".camera", "an image given by camera name needs --rig and --poses");
     const int c = rig->indexOf(cam);
-    if (c < 0) detail::fail(path, k + ".camera", "camera '" + cam + "' is not in the rig file");
-    if (!o.contains("timestamp")) detail::fail(path, k + ".timestamp", "missing key (needed with \"camera\")");
+    if (c < 0) world::failAt(path, k + ".camera", "camera '" + cam + "' is not in the rig file");
+    if (!o.contains("timestamp")) world::failAt(path, k + ".timestamp", "missing key (needed with \"camera\")");
     mrpt::math::TPose2D p;
     if (!io::interpolatePose(*poses, im.timestamp_s, p))
-        detail::fail(path, k + ".timestamp", "time " + std::to_string(im.timestamp_s) + " s is outside the poses' range");
+        world::failAt(path, k + ".timestamp", "time " + std::to_string(im.timestamp_s) + " s is outside the poses' range");
     const RigCamera& rc = rig->cameras[static_cast<std::size_t>(c)];
     const mrpt::poses::CPose3D world_T_camera = mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)) + rc.robotTCamera();
     im.world_T_camera.linear() = world_T_camera.getRotationMatrix().asEigen();
@@ -36,41 +36,41 @@ void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
 
 std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRig* rig,
                                          const std::vector<io::StampedPose2D>* poses) {
-    const detail::json j = detail::readJsonFile(path);
-    const detail::json& ims = detail::require(j, "images", path, "images");
-    if (!ims.is_array()) detail::fail(path, "images", "expected a list of images");
+    const detail::json j = world::readJsonFile(path);
+    const detail::json& ims = world::requireKey(j, "images", path, "images");
+    if (!ims.is_array()) world::failAt(path, "images", "expected a list of images");
     std::vector<PosedImage> out;
     std::set<std::int64_t> ids;
     for (std::size_t i = 0; i < ims.size(); ++i) {
         const std::string k = "images[" + std::to_string(i) + "]";
         const detail::json& o = ims[i];
         PosedImage im;
-        im.id = detail::integer(detail::require(o, "id", path, k + ".id"), path, k + ".id");
-        if (!ids.insert(im.id).second) detail::fail(path, k + ".id", "duplicate image id " + std::to_string(im.id));
-        im.file_path = detail::text(detail::require(o, "file_path", path, k + ".file_path"), path, k + ".file_path");
-        if (o.contains("timestamp")) im.timestamp_s = detail::number(o["timestamp"], path, k + ".timestamp");
+        im.id = world::asInteger(world::requireKey(o, "id", path, k + ".id"), path, k + ".id");
+        if (!ids.insert(im.id).second) world::failAt(path, k + ".id", "duplicate image id " + std::to_string(im.id));
+        im.file_path = world::asString(world::requireKey(o, "file_path", path, k + ".file_path"), path, k + ".file_path");
+        if (o.contains("timestamp")) im.timestamp_s = world::asNumber(o["timestamp"], path, k + ".timestamp");
         if (o.contains("camera")) {
             poseFromRig(im, o, rig, poses, path, k);
             out.push_back(im);
             continue;
         }
-        im.width = static_cast<int>(detail::integer(detail::require(o, "width", path, k + ".width"), path, k + ".width"));
-        im.height = static_cast<int>(detail::integer(detail::require(o, "height", path, k + ".height"), path, k + ".height"));
-        if (im.width <= 0 || im.height <= 0) detail::fail(path, k + ".width/height", "must be > 0 px");
-        im.K = detail::matrix3(detail::require(o, "K", path, k + ".K"), path, k + ".K");
+        im.width = static_cast<int>(world::asInteger(world::requireKey(o, "width", path, k + ".width"), path, k + ".width"));
+        im.height = static_cast<int>(world::asInteger(world::requireKey(o, "height", path, k + ".height"), path, k + ".height"));
+        if (im.width <= 0 || im.height <= 0) world::failAt(path, k + ".width/height", "must be > 0 px");
+        im.K = detail::matrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
         if (!(im.K(0, 0) > 0) || !(im.K(1, 1) > 0) || im.K(1, 0) != 0 || im.K(2, 0) != 0 || im.K(2, 1) != 0 || im.K(2, 2) != 1)
-            detail::fail(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
-        const auto p = detail::numbers(detail::require(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
+            world::failAt(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
+        const auto p = detail::numbers(world::requireKey(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
         Eigen::Matrix3d R;
         if (o.contains("quaternion_wxyz")) {
             const auto q = detail::numbers(o["quaternion_wxyz"], 4, path, k + ".quaternion_wxyz");
             const Eigen::Quaterniond quat(q[0], q[1], q[2], q[3]);
-            if (std::abs(quat.norm() - 1.0) > 1e-6) detail::fail(path, k + ".quaternion_wxyz", "not a unit quaternion");
+            if (std::abs(quat.norm() - 1.0) > 1e-6) world::failAt(path, k + ".quaternion_wxyz", "not a unit quaternion");
             R = quat.normalized().toRotationMatrix();
         } else {
-            R = detail::matrix3(detail::require(o, "rotation", path, k + ".rotation"), path, k + ".rotation");
+            R = detail::matrix3(world::requireKey(o, "rotation", path, k + ".rotation"), path, k + ".rotation");
             if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
-                detail::fail(path, k + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
+                world::failAt(path, k + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
         }
         im.world_T_camera.linear() = R;
         im.world_T_camera.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
@@ -93,7 +93,7 @@ void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& i
         o["rotation"] = detail::toJson(Eigen::Matrix3d(im.world_T_camera.linear()));
         ims.push_back(o);
     }
-    detail::writeJsonFile(nlohmann::ordered_json{{"images", ims}}, path);
+    world::writeJsonFile(nlohmann::ordered_json{{"images", ims}}, path, world::JsonLayout::Indent1);
 }
 
 }  // namespace simp::labels

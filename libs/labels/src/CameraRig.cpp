@@ -38,9 +38,9 @@ RigCamera cameraFrom(const std::string& name, const std::function<double(const s
     c.pitch_down_rad = std::isnan(pitch) ? 0.0 : pitch;
     const double fx = get("fx", true), fy = get("fy", true), cx = get("cx", true), cy = get("cy", true);
     const double w = get("width", true), h = get("height", true);
-    if (!(fx > 0) || !(fy > 0)) detail::fail(file, where + ".fx/fy", "focal lengths must be > 0 px");
+    if (!(fx > 0) || !(fy > 0)) world::failAt(file, where + ".fx/fy", "focal lengths must be > 0 px");
     if (!(w >= 1) || !(h >= 1) || std::floor(w) != w || std::floor(h) != h)
-        detail::fail(file, where + ".width/height", "expected positive integers (px)");
+        world::failAt(file, where + ".width/height", "expected positive integers (px)");
     c.intrinsics.ncols = static_cast<uint32_t>(w);
     c.intrinsics.nrows = static_cast<uint32_t>(h);
     c.intrinsics.setIntrinsicParamsFromValues(fx, fy, cx, cy);
@@ -50,22 +50,22 @@ RigCamera cameraFrom(const std::string& name, const std::function<double(const s
 CameraRig loadIni(const std::string& path) {
     mrpt::config::CConfigFile cfg(path);
     const std::string list = cfg.read_string("rig", "cameras", "");
-    if (list.empty()) detail::fail(path, "[rig] cameras", "missing: list the camera section names");
+    if (list.empty()) world::failAt(path, "[rig] cameras", "missing: list the camera section names");
     std::vector<std::string> names;
     mrpt::system::tokenize(list, " \t,", names);
     CameraRig rig;
     for (const std::string& name : names) {
-        if (!cfg.sectionExists(name)) detail::fail(path, "[" + name + "]", "missing section for camera '" + name + "'");
+        if (!cfg.sectionExists(name)) world::failAt(path, "[" + name + "]", "missing section for camera '" + name + "'");
         const auto get = [&](const std::string& key, bool required) {
             const std::string v = mrpt::system::trim(cfg.read_string(name, key, ""));
             if (v.empty()) {
-                if (required) detail::fail(path, "[" + name + "] " + key, "missing key");
+                if (required) world::failAt(path, "[" + name + "] " + key, "missing key");
                 return std::nan("");
             }
             char* end = nullptr;
             const double x = std::strtod(v.c_str(), &end);
             if (end == v.c_str() || *end != '\0' || !std::isfinite(x))
-                detail::fail(path, "[" + name + "] " + key, "expected a number, got '" + v + "'");
+                world::failAt(path, "[" + name + "] " + key, "expected a number, got '" + v + "'");
             return x;
         };
         rig.cameras.push_back(cameraFrom(name, get, path, "[" + name + "]"));
@@ -74,19 +74,19 @@ CameraRig loadIni(const std::string& path) {
 }
 
 CameraRig loadJson(const std::string& path) {
-    const detail::json j = detail::readJsonFile(path);
-    const detail::json& cams = detail::require(j, "cameras", path, "cameras");
-    if (!cams.is_array()) detail::fail(path, "cameras", "expected a list of cameras");
+    const detail::json j = world::readJsonFile(path);
+    const detail::json& cams = world::requireKey(j, "cameras", path, "cameras");
+    if (!cams.is_array()) world::failAt(path, "cameras", "expected a list of cameras");
     CameraRig rig;
     for (std::size_t i = 0; i < cams.size(); ++i) {
         const std::string where = "cameras[" + std::to_string(i) + "]";
-        const std::string name = detail::text(detail::require(cams[i], "name", path, where + ".name"), path, where + ".name");
+        const std::string name = world::asString(world::requireKey(cams[i], "name", path, where + ".name"), path, where + ".name");
         const auto get = [&](const std::string& key, bool required) {
             if (!cams[i].contains(key)) {
-                if (required) detail::fail(path, where + "." + key, "missing key");
+                if (required) world::failAt(path, where + "." + key, "missing key");
                 return std::nan("");
             }
-            return detail::number(cams[i][key], path, where + "." + key);
+            return world::asNumber(cams[i][key], path, where + "." + key);
         };
         rig.cameras.push_back(cameraFrom(name, get, path, where));
     }
@@ -96,13 +96,13 @@ CameraRig loadJson(const std::string& path) {
 }  // namespace
 
 CameraRig loadCameraRig(const std::string& path) {
-    if (!std::filesystem::exists(path)) detail::fail(path, "", "file not found");
+    if (!std::filesystem::exists(path)) world::failAt(path, "", "file not found");
     const std::string ext = std::filesystem::path(path).extension().string();
     CameraRig rig = ext == ".json" ? loadJson(path) : loadIni(path);
-    if (rig.cameras.empty()) detail::fail(path, "cameras", "no camera defined");
+    if (rig.cameras.empty()) world::failAt(path, "cameras", "no camera defined");
     std::set<std::string> names;
     for (const auto& c : rig.cameras)
-        if (!names.insert(c.name).second) detail::fail(path, c.name, "duplicate camera name");
+        if (!names.insert(c.name).second) world::failAt(path, c.name, "duplicate camera name");
     return rig;
 }
 

@@ -21,13 +21,13 @@ std::string trim(const std::string& s) {
 
 void check(const Detection2D& d, const std::vector<std::string>& names, const std::string& file, const std::string& where) {
     if (std::find(names.begin(), names.end(), d.class_name) == names.end())
-        detail::fail(file, where, "unknown class '" + d.class_name + "' (not a class of the world)");
-    if (!(d.x_max > d.x_min) || !(d.y_max > d.y_min)) detail::fail(file, where, "expected x_min < x_max and y_min < y_max");
+        world::failAt(file, where, "unknown class '" + d.class_name + "' (not a class of the world)");
+    if (!(d.x_max > d.x_min) || !(d.y_max > d.y_min)) world::failAt(file, where, "expected x_min < x_max and y_min < y_max");
 }
 
 std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std::string>& names) {
     std::ifstream in(path);
-    if (!in) detail::fail(path, "", "cannot open for reading");
+    if (!in) world::failAt(path, "", "cannot open for reading");
     std::vector<Detection2D> out;
     std::string line;
     std::size_t n = 0;
@@ -40,16 +40,16 @@ std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std:
         for (std::string c; std::getline(ss, c, ',');) f.push_back(trim(c));
         const std::string where = "line " + std::to_string(n);
         if (f.size() != 7)
-            detail::fail(path, where, "wrong column count " + std::to_string(f.size()) +
+            world::failAt(path, where, "wrong column count " + std::to_string(f.size()) +
                                           " (expected 7: image_id,class,x_min,y_min,x_max,y_max,score)");
         double v[7] = {};
         for (std::size_t c : {0u, 2u, 3u, 4u, 5u, 6u}) {
             char* end = nullptr;
             v[c] = std::strtod(f[c].c_str(), &end);
             if (f[c].empty() || *end != '\0' || !std::isfinite(v[c]))
-                detail::fail(path, where, "column " + std::to_string(c + 1) + ": expected a number, got '" + f[c] + "'");
+                world::failAt(path, where, "column " + std::to_string(c + 1) + ": expected a number, got '" + f[c] + "'");
         }
-        if (std::floor(v[0]) != v[0]) detail::fail(path, where, "column 1: image_id must be an integer");
+        if (std::floor(v[0]) != v[0]) world::failAt(path, where, "column 1: image_id must be an integer");
         Detection2D d{static_cast<std::int64_t>(v[0]), f[1], v[2], v[3], v[4], v[5], v[6]};
         check(d, names, path, where);
         out.push_back(d);
@@ -58,18 +58,18 @@ std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std:
 }
 
 std::vector<Detection2D> readJson(const std::string& path, const std::vector<std::string>& names) {
-    const detail::json j = detail::readJsonFile(path);
-    const detail::json& dets = detail::require(j, "detections", path, "detections");
-    if (!dets.is_array()) detail::fail(path, "detections", "expected a list");
+    const detail::json j = world::readJsonFile(path);
+    const detail::json& dets = world::requireKey(j, "detections", path, "detections");
+    if (!dets.is_array()) world::failAt(path, "detections", "expected a list");
     std::vector<Detection2D> out;
     for (std::size_t i = 0; i < dets.size(); ++i) {
         const std::string k = "detections[" + std::to_string(i) + "]";
         Detection2D d;
-        d.image_id = detail::integer(detail::require(dets[i], "image_id", path, k + ".image_id"), path, k + ".image_id");
-        d.class_name = detail::text(detail::require(dets[i], "class", path, k + ".class"), path, k + ".class");
-        const auto b = detail::numbers(detail::require(dets[i], "bbox", path, k + ".bbox"), 4, path, k + ".bbox");
+        d.image_id = world::asInteger(world::requireKey(dets[i], "image_id", path, k + ".image_id"), path, k + ".image_id");
+        d.class_name = world::asString(world::requireKey(dets[i], "class", path, k + ".class"), path, k + ".class");
+        const auto b = detail::numbers(world::requireKey(dets[i], "bbox", path, k + ".bbox"), 4, path, k + ".bbox");
         d.x_min = b[0], d.y_min = b[1], d.x_max = b[2], d.y_max = b[3];
-        if (dets[i].contains("score")) d.score = detail::number(dets[i]["score"], path, k + ".score");
+        if (dets[i].contains("score")) d.score = world::asNumber(dets[i]["score"], path, k + ".score");
         check(d, names, path, k);
         out.push_back(d);
     }
@@ -79,7 +79,7 @@ std::vector<Detection2D> readJson(const std::string& path, const std::vector<std
 }  // namespace
 
 std::vector<Detection2D> readDetections2D(const std::string& path, const std::vector<std::string>& class_names) {
-    if (!std::filesystem::exists(path)) detail::fail(path, "", "file not found");
+    if (!std::filesystem::exists(path)) world::failAt(path, "", "file not found");
     return std::filesystem::path(path).extension() == ".json" ? readJson(path, class_names) : readCsv(path, class_names);
 }
 

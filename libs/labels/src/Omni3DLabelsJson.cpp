@@ -57,7 +57,7 @@ void writeOmni3DLabels(const std::string& path, const LabelSet& labels, const st
         anns.push_back(o);
     }
     j["annotations"] = anns;
-    detail::writeJsonFile(j, path);
+    world::writeJsonFile(j, path, world::JsonLayout::Indent1);
 }
 
 }  // namespace simp::labels

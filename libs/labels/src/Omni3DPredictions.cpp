@@ -16,16 +16,16 @@ using detail::json;
 std::uint16_t classOf(const json& p, const std::vector<std::string>& names, const std::string& file,
                       const std::string& key) {
     const bool has_cat = p.contains("category");
-    const json& v = has_cat ? p["category"] : detail::require(p, "category_id", file, key + ".category");
+    const json& v = has_cat ? p["category"] : world::requireKey(p, "category_id", file, key + ".category");
     const std::string k = key + (has_cat ? ".category" : ".category_id");
     if (v.is_string()) {
         const int c = obs::classIndexOf(names, v.get<std::string>());
-        if (c < 0) detail::fail(file, k, "unknown class '" + v.get<std::string>() + "' (not in the categories)");
+        if (c < 0) world::failAt(file, k, "unknown class '" + v.get<std::string>() + "' (not in the categories)");
         return static_cast<std::uint16_t>(c);
     }
-    const long long c = detail::integer(v, file, k);
+    const long long c = world::asInteger(v, file, k);
     if (c < 0 || c >= static_cast<long long>(names.size()))
-        detail::fail(file, k, "unknown class id " + std::to_string(c) + " (" + std::to_string(names.size()) + " categories)");
+        world::failAt(file, k, "unknown class id " + std::to_string(c) + " (" + std::to_string(names.size()) + " categories)");
     return static_cast<std::uint16_t>(c);
 }
 
@@ -33,11 +33,11 @@ obs::Detection3D detectionOf(const json& p, const std::vector<std::string>& name
                              const std::string& key) {
     obs::Detection3D d;
     d.class_id = classOf(p, names, file, key);
-    d.confidence = static_cast<float>(detail::number(detail::require(p, "score", file, key + ".score"), file, key + ".score"));
-    const auto c = detail::numbers(detail::require(p, "center_cam", file, key + ".center_cam"), 3, file, key + ".center_cam");
-    const auto s = detail::numbers(detail::require(p, "dimensions", file, key + ".dimensions"), 3, file, key + ".dimensions");
+    d.confidence = static_cast<float>(world::asNumber(world::requireKey(p, "score", file, key + ".score"), file, key + ".score"));
+    const auto c = detail::numbers(world::requireKey(p, "center_cam", file, key + ".center_cam"), 3, file, key + ".center_cam");
+    const auto s = detail::numbers(world::requireKey(p, "dimensions", file, key + ".dimensions"), 3, file, key + ".dimensions");
     const std::string rkey = p.contains("R_cam") ? "R_cam" : "pose";
-    const Eigen::Matrix3d R = detail::matrix3(detail::require(p, rkey, file, key + ".R_cam"), file, key + "." + rkey);
+    const Eigen::Matrix3d R = detail::matrix3(world::requireKey(p, rkey, file, key + ".R_cam"), file, key + "." + rkey);
     d.box_in_camera = boxFromOmni3D({c[0], c[1], c[2]}, {s[0], s[1], s[2]}, R);
     if (p.contains("bbox2D")) {
         const auto b = detail::numbers(p["bbox2D"], 4, file, key + ".bbox2D");
@@ -48,11 +48,11 @@ obs::Detection3D detectionOf(const json& p, const std::vector<std::string>& name
         d.box_2d = obs::ImageBox2D{static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[0] + b[2]),
                                    static_cast<float>(b[1] + b[3])};
     }
-    if (p.contains("detector_id")) d.detector_id = detail::integer(p["detector_id"], file, key + ".detector_id");
+    if (p.contains("detector_id")) d.detector_id = world::asInteger(p["detector_id"], file, key + ".detector_id");
     try {
         obs::validateDetection(d, names.size(), key);
     } catch (const std::exception& e) {
-        detail::fail(file, key, e.what());
+        world::failAt(file, key, e.what());
     }
     return d;
 }
@@ -60,7 +60,7 @@ obs::Detection3D detectionOf(const json& p, const std::vector<std::string>& name
 }  // namespace
 
 DetectionSet readOmni3DPredictions(const std::string& path) {
-    const json j = detail::readJsonFile(path);
+    const json j = world::readJsonFile(path);
     DetectionSet set;
     set.class_names = obs::defaultClassNames();
     const json* preds = &j;
@@ -69,45 +69,45 @@ DetectionSet readOmni3DPredictions(const std::string& path) {
     if (j.is_object()) {
         if (j.contains("categories")) {
             const json& cats = j["categories"];
-            if (!cats.is_array() || cats.empty()) detail::fail(path, "categories", "expected a non-empty list of names");
+            if (!cats.is_array() || cats.empty()) world::failAt(path, "categories", "expected a non-empty list of names");
             set.class_names.clear();
             for (std::size_t i = 0; i < cats.size(); ++i) {
                 const std::string k = "categories[" + std::to_string(i) + "]";
                 // Omni3D style {"id", "name"} or a plain name.
-                set.class_names.push_back(cats[i].is_object() ? detail::text(detail::require(cats[i], "name", path, k + ".name"), path, k + ".name")
-                                                              : detail::text(cats[i], path, k));
+                set.class_names.push_back(cats[i].is_object() ? world::asString(world::requireKey(cats[i], "name", path, k + ".name"), path, k + ".name")
+                                                              : world::asString(cats[i], path, k));
             }
         }
         if (j.contains("images")) {
             const json& ims = j["images"];
-            if (!ims.is_array()) detail::fail(path, "images", "expected a list");
+            if (!ims.is_array()) world::failAt(path, "images", "expected a list");
             for (std::size_t i = 0; i < ims.size(); ++i) {
                 const std::string k = "images[" + std::to_string(i) + "]";
                 DetectionImage im;
-                im.id = detail::integer(detail::require(ims[i], "id", path, k + ".id"), path, k + ".id");
-                im.timestamp_s = detail::number(detail::require(ims[i], "timestamp", path, k + ".timestamp"), path, k + ".timestamp");
-                im.camera = detail::text(detail::require(ims[i], "camera", path, k + ".camera"), path, k + ".camera");
+                im.id = world::asInteger(world::requireKey(ims[i], "id", path, k + ".id"), path, k + ".id");
+                im.timestamp_s = world::asNumber(world::requireKey(ims[i], "timestamp", path, k + ".timestamp"), path, k + ".timestamp");
+                im.camera = world::asString(world::requireKey(ims[i], "camera", path, k + ".camera"), path, k + ".camera");
                 if (!image_index.emplace(im.id, set.images.size()).second)
-                    detail::fail(path, k + ".id", "duplicate image id " + std::to_string(im.id));
+                    world::failAt(path, k + ".id", "duplicate image id " + std::to_string(im.id));
                 by_time.emplace(std::make_pair(im.timestamp_s, im.camera), set.images.size());
                 set.images.push_back(im);
             }
         }
-        preds = &detail::require(j, "predictions", path, "predictions");
+        preds = &world::requireKey(j, "predictions", path, "predictions");
     }
-    if (!preds->is_array()) detail::fail(path, "predictions", "expected a list of predictions");
+    if (!preds->is_array()) world::failAt(path, "predictions", "expected a list of predictions");
     for (std::size_t i = 0; i < preds->size(); ++i) {
         const json& p = (*preds)[i];
         const std::string key = "predictions[" + std::to_string(i) + "]";
-        if (!p.is_object()) detail::fail(path, key, "expected an object");
+        if (!p.is_object()) world::failAt(path, key, "expected an object");
         std::size_t target = 0;
         if (p.contains("timestamp") || !p.contains("image_id")) {
-            const double t = detail::number(detail::require(p, "timestamp", path, key + ".timestamp"), path, key + ".timestamp");
-            const std::string cam = detail::text(detail::require(p, "camera", path, key + ".camera"), path, key + ".camera");
+            const double t = world::asNumber(world::requireKey(p, "timestamp", path, key + ".timestamp"), path, key + ".timestamp");
+            const std::string cam = world::asString(world::requireKey(p, "camera", path, key + ".camera"), path, key + ".camera");
             auto it = by_time.find({t, cam});
             if (it == by_time.end()) {
                 DetectionImage im;
-                im.id = p.contains("image_id") ? detail::integer(p["image_id"], path, key + ".image_id")
+                im.id = p.contains("image_id") ? world::asInteger(p["image_id"], path, key + ".image_id")
                                                : static_cast<std::int64_t>(set.images.size());
                 im.timestamp_s = t;
                 im.camera = cam;
@@ -116,10 +116,10 @@ DetectionSet readOmni3DPredictions(const std::string& path) {
             }
             target = it->second;
         } else {
-            const std::int64_t id = detail::integer(p["image_id"], path, key + ".image_id");
+            const std::int64_t id = world::asInteger(p["image_id"], path, key + ".image_id");
             const auto it = image_index.find(id);
             if (it == image_index.end())
-                detail::fail(path, key + ".image_id", "unknown image id " + std::to_string(id) +
+                world::failAt(path, key + ".image_id", "unknown image id " + std::to_string(id) +
                                                           " (not in \"images\"; or give \"timestamp\" and \"camera\")");
             target = it->second;
         }
@@ -150,7 +150,7 @@ void writeOmni3DPredictions(const std::string& path, const DetectionSet& set) {
     }
     j["images"] = ims;
     j["predictions"] = preds;
-    detail::writeJsonFile(j, path);
+    world::writeJsonFile(j, path, world::JsonLayout::Indent1);
 }
 
 }  // namespace simp::labels

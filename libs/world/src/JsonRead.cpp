@@ -1,4 +1,4 @@
-#include "JsonRead.h"
+#include <simp/world/JsonRead.h>
 
 #include <algorithm>
 #include <cmath>
@@ -6,20 +6,22 @@
 #include <fstream>
 #include <stdexcept>
 
-namespace simp::world::detail {
+namespace simp::world {
 
-void fail(const std::string& file, const std::string& key, const std::string& what) {
+using nlohmann::json;
+
+void failAt(const std::string& file, const std::string& key, const std::string& what) {
     throw std::runtime_error(file + ": " + (key.empty() ? std::string() : key + ": ") + what);
 }
 
 json readJsonFile(const std::string& path) {
-    if (!std::filesystem::exists(path)) fail(path, "", "file not found");
+    if (!std::filesystem::exists(path)) failAt(path, "", "file not found");
     std::ifstream in(path);
-    if (!in) fail(path, "", "cannot open for reading");
+    if (!in) failAt(path, "", "cannot open for reading");
     try {
         return json::parse(in);
     } catch (const json::parse_error& e) {
-        fail(path, "", std::string("invalid JSON: ") + e.what());
+        failAt(path, "", std::string("invalid JSON: ") + e.what());
     }
 }
 
@@ -49,29 +51,32 @@ void dumpReadable(const nlohmann::ordered_json& j, const std::string& indent, st
 
 }  // namespace
 
-void writeJsonFile(const nlohmann::ordered_json& j, const std::string& path) {
+void writeJsonFile(const nlohmann::ordered_json& j, const std::string& path, JsonLayout layout) {
     const std::filesystem::path p(path);
     if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
     std::ofstream out(path);
-    if (!out) fail(path, "", "cannot open for writing");
+    if (!out) failAt(path, "", "cannot open for writing");
     std::string text;
-    dumpReadable(j, "", text);
+    if (layout == JsonLayout::Indent1)
+        text = j.dump(1);
+    else
+        dumpReadable(j, "", text);
     out << text << "\n";
-    if (!out) fail(path, "", "write failed");
+    if (!out) failAt(path, "", "write failed");
 }
 
-const json& require(const json& obj, const std::string& key, const std::string& file,
+const json& requireKey(const json& obj, const std::string& key, const std::string& file,
                     const std::string& key_path) {
-    if (!obj.is_object()) fail(file, key_path, "expected a JSON object around this key");
+    if (!obj.is_object()) failAt(file, key_path, "expected a JSON object around this key");
     const auto it = obj.find(key);
-    if (it == obj.end()) fail(file, key_path, "missing");
+    if (it == obj.end()) failAt(file, key_path, "missing key");
     return *it;
 }
 
 double asNumber(const json& v, const std::string& file, const std::string& key_path) {
-    if (!v.is_number()) fail(file, key_path, "expected a number, got " + v.dump());
+    if (!v.is_number()) failAt(file, key_path, "expected a number, got " + v.dump());
     const double d = v.get<double>();
-    if (!std::isfinite(d)) fail(file, key_path, "expected a finite number");
+    if (!std::isfinite(d)) failAt(file, key_path, "expected a finite number");
     return d;
 }
 
@@ -81,26 +86,26 @@ long long asInteger(const json& v, const std::string& file, const std::string& k
         const double d = v.get<double>();
         if (std::isfinite(d) && d == std::floor(d) && std::abs(d) < 9e15) return static_cast<long long>(d);
     }
-    fail(file, key_path, "expected an integer, got " + v.dump());
+    failAt(file, key_path, "expected an integer, got " + v.dump());
 }
 
 std::string asString(const json& v, const std::string& file, const std::string& key_path) {
-    if (!v.is_string()) fail(file, key_path, "expected a string, got " + v.dump());
+    if (!v.is_string()) failAt(file, key_path, "expected a string, got " + v.dump());
     return v.get<std::string>();
 }
 
 std::vector<double> asNumbers(const json& v, std::size_t n, const std::string& file,
                               const std::string& key_path, const std::string& expect) {
-    if (!v.is_array() || (n != 0 && v.size() != n)) fail(file, key_path, "expected " + expect);
+    if (!v.is_array() || (n != 0 && v.size() != n)) failAt(file, key_path, "expected " + expect);
     std::vector<double> out;
     out.reserve(v.size());
     for (const auto& e : v) {
-        if (!e.is_number()) fail(file, key_path, "expected " + expect);
+        if (!e.is_number()) failAt(file, key_path, "expected " + expect);
         const double d = e.get<double>();
-        if (!std::isfinite(d)) fail(file, key_path, "expected " + expect + " (got a non-finite value)");
+        if (!std::isfinite(d)) failAt(file, key_path, "expected " + expect + " (got a non-finite value)");
         out.push_back(d);
     }
     return out;
 }
 
-}  // namespace simp::world::detail
+}  // namespace simp::world

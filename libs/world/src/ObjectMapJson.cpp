@@ -3,9 +3,8 @@
 /// with full double precision (nlohmann::json prints the shortest text that reads back to the
 /// same double), and the content checks shared by both.
 
-#include "JsonRead.h"
-
 #include <simp/world/ObjectMapData.h>
+#include <simp/world/JsonRead.h>
 
 #include <set>
 #include <stdexcept>
@@ -14,7 +13,7 @@ namespace simp::world {
 
 namespace {
 
-using detail::json;
+using nlohmann::json;
 
 constexpr const char* kFormat = "simp-object-map";
 constexpr int kVersion = 1;
@@ -26,22 +25,22 @@ nlohmann::ordered_json noiseToJson(const NoiseModel& n) {
 }
 
 NoiseModel noiseFromJson(const json& j, const std::string& file, const std::string& key) {
-    if (!j.is_object()) detail::fail(file, key, "expected an object with mean_m, cov_m2, b");
+    if (!j.is_object()) failAt(file, key, "expected an object with mean_m, cov_m2, b");
     NoiseModel n;
-    const auto mean = detail::asNumbers(detail::require(j, "mean_m", file, key + ".mean_m"), 2, file,
+    const auto mean = asNumbers(requireKey(j, "mean_m", file, key + ".mean_m"), 2, file,
                                         key + ".mean_m", "2 numbers [x, y] (m)");
     n.mean_m = Eigen::Vector2d(mean[0], mean[1]);
-    const json& cov = detail::require(j, "cov_m2", file, key + ".cov_m2");
+    const json& cov = requireKey(j, "cov_m2", file, key + ".cov_m2");
     const std::string cov_expect = "a 2x2 matrix [[a, b], [c, d]] (m^2)";
-    if (!cov.is_array() || cov.size() != 2) detail::fail(file, key + ".cov_m2", "expected " + cov_expect);
+    if (!cov.is_array() || cov.size() != 2) failAt(file, key + ".cov_m2", "expected " + cov_expect);
     for (int r = 0; r < 2; ++r) {
-        const auto row = detail::asNumbers(cov[static_cast<std::size_t>(r)], 2, file, key + ".cov_m2", cov_expect);
+        const auto row = asNumbers(cov[static_cast<std::size_t>(r)], 2, file, key + ".cov_m2", cov_expect);
         n.cov_m2(r, 0) = row[0];
         n.cov_m2(r, 1) = row[1];
     }
-    n.exponent_b = detail::asNumber(detail::require(j, "b", file, key + ".b"), file, key + ".b");
+    n.exponent_b = asNumber(requireKey(j, "b", file, key + ".b"), file, key + ".b");
     if (!n.isValid())
-        detail::fail(file, key, "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
+        failAt(file, key, "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
     return n;
 }
 
@@ -49,17 +48,17 @@ Eigen::Matrix3d rotationFromJson(const json& o, const std::string& file, const s
     const bool has_R = o.contains("rotation");
     const bool has_yaw = o.contains("yaw_rad");
     if (has_R == has_yaw)
-        detail::fail(file, key + ".rotation", "expected exactly one of \"rotation\" (3x3) or \"yaw_rad\"");
+        failAt(file, key + ".rotation", "expected exactly one of \"rotation\" (3x3) or \"yaw_rad\"");
     if (has_yaw) {
-        const double yaw = detail::asNumber(o["yaw_rad"], file, key + ".yaw_rad");
+        const double yaw = asNumber(o["yaw_rad"], file, key + ".yaw_rad");
         return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     }
     const json& R = o["rotation"];
     const std::string expect = "a 3x3 rotation matrix, row-major [[r00, r01, r02], [..], [..]]";
-    if (!R.is_array() || R.size() != 3) detail::fail(file, key + ".rotation", "expected " + expect);
+    if (!R.is_array() || R.size() != 3) failAt(file, key + ".rotation", "expected " + expect);
     Eigen::Matrix3d M;
     for (int r = 0; r < 3; ++r) {
-        const auto row = detail::asNumbers(R[static_cast<std::size_t>(r)], 3, file, key + ".rotation", expect);
+        const auto row = asNumbers(R[static_cast<std::size_t>(r)], 3, file, key + ".rotation", expect);
         for (int c = 0; c < 3; ++c) M(r, c) = row[static_cast<std::size_t>(c)];
     }
     return M;
@@ -68,112 +67,112 @@ Eigen::Matrix3d rotationFromJson(const json& o, const std::string& file, const s
 }  // namespace
 
 void validateObjectMap(const ObjectMapData& d, const std::string& where) {
-    if (d.class_names.empty()) detail::fail(where, "classes", "expected a non-empty list of class names");
+    if (d.class_names.empty()) failAt(where, "classes", "expected a non-empty list of class names");
     std::set<std::string> names;
     for (std::size_t i = 0; i < d.class_names.size(); ++i) {
         const std::string key = "classes[" + std::to_string(i) + "]";
-        if (d.class_names[i].empty()) detail::fail(where, key, "empty class name");
+        if (d.class_names[i].empty()) failAt(where, key, "empty class name");
         if (!names.insert(d.class_names[i]).second)
-            detail::fail(where, key, "duplicate class name '" + d.class_names[i] + "'");
+            failAt(where, key, "duplicate class name '" + d.class_names[i] + "'");
     }
     if (d.class_noise.size() > d.class_names.size())
-        detail::fail(where, "class_noise", "more noise models than classes");
+        failAt(where, "class_noise", "more noise models than classes");
     for (std::size_t c = 0; c < d.class_noise.size(); ++c)
         if (d.class_noise[c] && !d.class_noise[c]->isValid())
-            detail::fail(where, "class_noise." + d.class_names[c],
+            failAt(where, "class_noise." + d.class_names[c],
                          "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
     std::set<std::int64_t> ids;
     for (std::size_t i = 0; i < d.objects.size(); ++i) {
         const MapObject& o = d.objects[i];
         const std::string key = "objects[" + std::to_string(i) + "]";
-        if (!ids.insert(o.id).second) detail::fail(where, key + ".id", "duplicate id " + std::to_string(o.id));
+        if (!ids.insert(o.id).second) failAt(where, key + ".id", "duplicate id " + std::to_string(o.id));
         if (o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= d.class_names.size())
-            detail::fail(where, key + ".class", "class id " + std::to_string(o.class_id) + " out of range");
-        if (!o.box.center.allFinite()) detail::fail(where, key + ".center_m", "expected 3 finite numbers");
+            failAt(where, key + ".class", "class id " + std::to_string(o.class_id) + " out of range");
+        if (!o.box.center.allFinite()) failAt(where, key + ".center_m", "expected 3 finite numbers");
         if (!o.box.size.allFinite() || (o.box.size.array() <= 0.0).any())
-            detail::fail(where, key + ".size_m", "expected 3 positive numbers");
+            failAt(where, key + ".size_m", "expected 3 positive numbers");
         if (!o.box.isValid(1e-6))
-            detail::fail(where, key + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
-        if (o.n_match < 0) detail::fail(where, key + ".n_match", "expected an integer >= 0");
-        if (o.n_skip < 0) detail::fail(where, key + ".n_skip", "expected an integer >= 0");
-        if (o.room_id < 0) detail::fail(where, key + ".room", "expected an integer >= 0 (0 = no room)");
+            failAt(where, key + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
+        if (o.n_match < 0) failAt(where, key + ".n_match", "expected an integer >= 0");
+        if (o.n_skip < 0) failAt(where, key + ".n_skip", "expected an integer >= 0");
+        if (o.room_id < 0) failAt(where, key + ".room", "expected an integer >= 0 (0 = no room)");
         if (o.noise && !o.noise->isValid())
-            detail::fail(where, key + ".noise", "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
+            failAt(where, key + ".noise", "invalid noise model (cov_m2 must be symmetric positive definite, b > 0)");
     }
     std::set<int> room_ids;
     for (std::size_t i = 0; i < d.rooms.size(); ++i)
         if (d.rooms[i].id < 1 || !room_ids.insert(d.rooms[i].id).second)
-            detail::fail(where, "rooms[" + std::to_string(i) + "].id", "expected a unique integer >= 1");
+            failAt(where, "rooms[" + std::to_string(i) + "].id", "expected a unique integer >= 1");
 }
 
 ObjectMapData loadObjectMap(const std::string& path) {
-    const json j = detail::readJsonFile(path);
-    if (!j.is_object()) detail::fail(path, "", "expected a JSON object at the top level");
-    const std::string format = detail::asString(detail::require(j, "format", path, "format"), path, "format");
-    if (format != kFormat) detail::fail(path, "format", "expected \"" + std::string(kFormat) + "\", got \"" + format + "\"");
-    const long long version = detail::asInteger(detail::require(j, "version", path, "version"), path, "version");
+    const json j = readJsonFile(path);
+    if (!j.is_object()) failAt(path, "", "expected a JSON object at the top level");
+    const std::string format = asString(requireKey(j, "format", path, "format"), path, "format");
+    if (format != kFormat) failAt(path, "format", "expected \"" + std::string(kFormat) + "\", got \"" + format + "\"");
+    const long long version = asInteger(requireKey(j, "version", path, "version"), path, "version");
     if (version != kVersion)
-        detail::fail(path, "version", "unsupported version " + std::to_string(version) + " (this build reads version " +
+        failAt(path, "version", "unsupported version " + std::to_string(version) + " (this build reads version " +
                                           std::to_string(kVersion) + ")");
 
     ObjectMapData d;
-    const json& classes = detail::require(j, "classes", path, "classes");
-    if (!classes.is_array() || classes.empty()) detail::fail(path, "classes", "expected a non-empty list of class names");
+    const json& classes = requireKey(j, "classes", path, "classes");
+    if (!classes.is_array() || classes.empty()) failAt(path, "classes", "expected a non-empty list of class names");
     for (std::size_t i = 0; i < classes.size(); ++i)
-        d.class_names.push_back(detail::asString(classes[i], path, "classes[" + std::to_string(i) + "]"));
+        d.class_names.push_back(asString(classes[i], path, "classes[" + std::to_string(i) + "]"));
     d.class_noise.assign(d.class_names.size(), std::nullopt);
 
     if (j.contains("class_noise")) {
         const json& cn = j["class_noise"];
-        if (!cn.is_object()) detail::fail(path, "class_noise", "expected an object {class name: noise model}");
+        if (!cn.is_object()) failAt(path, "class_noise", "expected an object {class name: noise model}");
         for (const auto& [name, model] : cn.items()) {
             const int c = d.classId(name);
-            if (c < 0) detail::fail(path, "class_noise." + name, "unknown class '" + name + "' (not in \"classes\")");
+            if (c < 0) failAt(path, "class_noise." + name, "unknown class '" + name + "' (not in \"classes\")");
             d.class_noise[static_cast<std::size_t>(c)] = noiseFromJson(model, path, "class_noise." + name);
         }
     }
 
-    const json& objects = detail::require(j, "objects", path, "objects");
-    if (!objects.is_array()) detail::fail(path, "objects", "expected a list of objects");
+    const json& objects = requireKey(j, "objects", path, "objects");
+    if (!objects.is_array()) failAt(path, "objects", "expected a list of objects");
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const json& o = objects[i];
         const std::string key = "objects[" + std::to_string(i) + "]";
-        if (!o.is_object()) detail::fail(path, key, "expected an object");
+        if (!o.is_object()) failAt(path, key, "expected an object");
         MapObject m;
-        m.id = detail::asInteger(detail::require(o, "id", path, key + ".id"), path, key + ".id");
-        const std::string cls = detail::asString(detail::require(o, "class", path, key + ".class"), path, key + ".class");
+        m.id = asInteger(requireKey(o, "id", path, key + ".id"), path, key + ".id");
+        const std::string cls = asString(requireKey(o, "class", path, key + ".class"), path, key + ".class");
         m.class_id = d.classId(cls);
-        if (m.class_id < 0) detail::fail(path, key + ".class", "unknown class '" + cls + "' (not in \"classes\")");
-        const auto c = detail::asNumbers(detail::require(o, "center_m", path, key + ".center_m"), 3, path,
+        if (m.class_id < 0) failAt(path, key + ".class", "unknown class '" + cls + "' (not in \"classes\")");
+        const auto c = asNumbers(requireKey(o, "center_m", path, key + ".center_m"), 3, path,
                                          key + ".center_m", "3 finite numbers [x, y, z] (m)");
-        const auto s = detail::asNumbers(detail::require(o, "size_m", path, key + ".size_m"), 3, path,
+        const auto s = asNumbers(requireKey(o, "size_m", path, key + ".size_m"), 3, path,
                                          key + ".size_m", "3 positive numbers");
-        if (s[0] <= 0 || s[1] <= 0 || s[2] <= 0) detail::fail(path, key + ".size_m", "expected 3 positive numbers");
+        if (s[0] <= 0 || s[1] <= 0 || s[2] <= 0) failAt(path, key + ".size_m", "expected 3 positive numbers");
         m.box.center = Eigen::Vector3d(c[0], c[1], c[2]);
         m.box.size = Eigen::Vector3d(s[0], s[1], s[2]);
         m.box.R = rotationFromJson(o, path, key);
-        if (o.contains("n_match")) m.n_match = static_cast<int>(detail::asInteger(o["n_match"], path, key + ".n_match"));
-        if (o.contains("n_skip")) m.n_skip = static_cast<int>(detail::asInteger(o["n_skip"], path, key + ".n_skip"));
-        if (o.contains("room")) m.room_id = static_cast<int>(detail::asInteger(o["room"], path, key + ".room"));
+        if (o.contains("n_match")) m.n_match = static_cast<int>(asInteger(o["n_match"], path, key + ".n_match"));
+        if (o.contains("n_skip")) m.n_skip = static_cast<int>(asInteger(o["n_skip"], path, key + ".n_skip"));
+        if (o.contains("room")) m.room_id = static_cast<int>(asInteger(o["room"], path, key + ".room"));
         if (o.contains("noise") && !o["noise"].is_null()) m.noise = noiseFromJson(o["noise"], path, key + ".noise");
         d.objects.push_back(m);
     }
 
     if (j.contains("room_categories")) {
         const json& rc = j["room_categories"];
-        if (!rc.is_array()) detail::fail(path, "room_categories", "expected a list of names");
+        if (!rc.is_array()) failAt(path, "room_categories", "expected a list of names");
         for (std::size_t i = 0; i < rc.size(); ++i)
-            d.room_categories.push_back(detail::asString(rc[i], path, "room_categories[" + std::to_string(i) + "]"));
+            d.room_categories.push_back(asString(rc[i], path, "room_categories[" + std::to_string(i) + "]"));
     }
     if (j.contains("rooms")) {
         const json& rooms = j["rooms"];
-        if (!rooms.is_array()) detail::fail(path, "rooms", "expected a list of {id, name, category}");
+        if (!rooms.is_array()) failAt(path, "rooms", "expected a list of {id, name, category}");
         for (std::size_t i = 0; i < rooms.size(); ++i) {
             const std::string key = "rooms[" + std::to_string(i) + "]";
             RoomInfo r;
-            r.id = static_cast<int>(detail::asInteger(detail::require(rooms[i], "id", path, key + ".id"), path, key + ".id"));
-            if (rooms[i].contains("name")) r.name = detail::asString(rooms[i]["name"], path, key + ".name");
-            if (rooms[i].contains("category")) r.category = detail::asString(rooms[i]["category"], path, key + ".category");
+            r.id = static_cast<int>(asInteger(requireKey(rooms[i], "id", path, key + ".id"), path, key + ".id"));
+            if (rooms[i].contains("name")) r.name = asString(rooms[i]["name"], path, key + ".name");
+            if (rooms[i].contains("category")) r.category = asString(rooms[i]["category"], path, key + ".category");
             d.rooms.push_back(r);
         }
     }
@@ -214,7 +213,7 @@ void saveObjectMap(const ObjectMapData& d, const std::string& path) {
         for (const RoomInfo& r : d.rooms) rooms.push_back({{"id", r.id}, {"name", r.name}, {"category", r.category}});
         j["rooms"] = rooms;
     }
-    detail::writeJsonFile(j, path);
+    writeJsonFile(j, path);
 }
 
 }  // namespace simp::world

@@ -1,10 +1,9 @@
 /// \file SimpExport.cpp
 /// A world -> the authors' map format, the inverse of SimpImport.cpp (doc/import-export.md).
 
-#include "JsonRead.h"
-
 #include <opencv2/imgcodecs.hpp>
 #include <simp/geometry/Box3D.h>
+#include <simp/world/JsonRead.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/SimpPixels.h>
 
@@ -72,9 +71,9 @@ ObjectPx toPixels(const ObjectMapData& d, const MapObject& o, const SimpPixelFra
 
 void writeText(const std::string& path, const std::string& text) {
     std::ofstream out(path);
-    if (!out) detail::fail(path, "", "cannot open for writing");
+    if (!out) failAt(path, "", "cannot open for writing");
     out << text;
-    if (!out) detail::fail(path, "", "write failed");
+    if (!out) failAt(path, "", "write failed");
 }
 
 }  // namespace
@@ -95,11 +94,11 @@ void exportSimpMap(const World& world, const std::string& dir) {
     if (!world.rooms.empty()) {
         double max_id = 0;
         cv::minMaxLoc(world.rooms.ids, nullptr, &max_id);
-        if (max_id > 255) detail::fail(out("roomseg.png"), "", "room id " + num(max_id) + " does not fit 8 bits");
-        if (world.rooms.ids.size() != roomseg.size()) detail::fail(out("roomseg.png"), "", "room raster size differs from the floor plan");
+        if (max_id > 255) failAt(out("roomseg.png"), "", "room id " + num(max_id) + " does not fit 8 bits");
+        if (world.rooms.ids.size() != roomseg.size()) failAt(out("roomseg.png"), "", "room raster size differs from the floor plan");
         world.rooms.ids.convertTo(roomseg, CV_8U);
     }
-    if (!cv::imwrite(out("roomseg.png"), roomseg)) detail::fail(out("roomseg.png"), "", "cannot write the image");
+    if (!cv::imwrite(out("roomseg.png"), roomseg)) failAt(out("roomseg.png"), "", "cannot write the image");
 
     std::vector<ObjectPx> objs;
     for (const MapObject& o : d.objects) objs.push_back(toPixels(d, o, px));
@@ -127,7 +126,7 @@ void exportSimpMap(const World& world, const std::string& dir) {
         csv += std::to_string(o.category) + "," + std::to_string(o.uid) + "," + num(o.mx) + "," + num(o.my) + "," +
                num(o.sx) + "," + num(o.sy) + "," + num(o.b) + ",\"[" + cs + "]\"\n";
     }
-    detail::writeJsonFile(gv, out("global_variance.json"));
+    writeJsonFile(gv, out("global_variance.json"));
     writeText(out("global_variance.csv"), csv);
 
     // class_noise.csv: class frame, in pixels of the floor plan's resolution.
@@ -189,14 +188,14 @@ void exportSimpMap(const World& world, const std::string& dir) {
         jrooms.push_back(jr);
     }
     fc["rooms"] = jrooms;
-    detail::writeJsonFile(fc, out("floor.config"));
+    writeJsonFile(fc, out("floor.config"));
 
     ojson meta;
     meta["thing_classes"] = d.class_names;
     ojson ids = ojson::object();
     for (std::size_t c = 0; c < d.class_names.size(); ++c) ids[std::to_string(c)] = c;
     meta["thing_dataset_id_to_contiguous_id"] = ids;
-    detail::writeJsonFile(meta, out("category_meta.json"));
+    writeJsonFile(meta, out("category_meta.json"));
 }
 
 }  // namespace simp::world

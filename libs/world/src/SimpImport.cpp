@@ -1,10 +1,9 @@
 /// \file SimpImport.cpp
 /// The authors' map format -> a world (doc/import-export.md, "How the numbers are read").
 
-#include "JsonRead.h"
-
 #include <mrpt/config/CConfigFile.h>
 #include <simp/geometry/Box3D.h>
+#include <simp/world/JsonRead.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/SimpPixels.h>
 
@@ -19,7 +18,7 @@ namespace simp::world {
 namespace {
 
 namespace fs = std::filesystem;
-using detail::json;
+using nlohmann::json;
 constexpr double kPi = 3.14159265358979323846;
 
 /// One row of class_noise.csv, in the authors' units (0.05 m cells, class frame).
@@ -48,7 +47,7 @@ double parseCsvNumber(const std::string& s, const std::string& file, const std::
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != s.size() || !std::isfinite(v)) detail::fail(file, key, "expected a finite number, got '" + s + "'");
+    if (used != s.size() || !std::isfinite(v)) failAt(file, key, "expected a finite number, got '" + s + "'");
     return v;
 }
 
@@ -56,43 +55,43 @@ double parseCsvNumber(const std::string& s, const std::string& file, const std::
 std::vector<std::optional<ClassNoisePx>> readClassNoiseCsv(const std::string& path, std::size_t num_classes) {
     std::vector<std::optional<ClassNoisePx>> out(num_classes);
     std::ifstream in(path);
-    if (!in) detail::fail(path, "", "cannot open for reading");
+    if (!in) failAt(path, "", "cannot open for reading");
     std::string line;
-    if (!std::getline(in, line)) detail::fail(path, "header", "empty file");
+    if (!std::getline(in, line)) failAt(path, "header", "empty file");
     const std::vector<std::string> expected = {"category", "mx", "my", "sx", "sy", "b"};
-    if (splitCsv(line) != expected) detail::fail(path, "header", "expected 'category,mx,my,sx,sy,b'");
+    if (splitCsv(line) != expected) failAt(path, "header", "expected 'category,mx,my,sx,sy,b'");
     int line_no = 1;
     while (std::getline(in, line)) {
         ++line_no;
         if (line.empty() || line == "\r") continue;
         const std::string row = "line " + std::to_string(line_no);
         const auto f = splitCsv(line);
-        if (f.size() != 6) detail::fail(path, row, "expected 6 comma-separated fields");
+        if (f.size() != 6) failAt(path, row, "expected 6 comma-separated fields");
         const double cat = parseCsvNumber(f[0], path, row + ".category");
         if (cat != std::floor(cat) || cat < 0 || cat >= static_cast<double>(num_classes))
-            detail::fail(path, row + ".category", "expected a class index in [0, " + std::to_string(num_classes) + ")");
+            failAt(path, row + ".category", "expected a class index in [0, " + std::to_string(num_classes) + ")");
         bool all_empty = true, any_empty = false;
         for (std::size_t k = 1; k < 6; ++k) {
             if (f[k].empty()) any_empty = true;
             else all_empty = false;
         }
         if (all_empty) continue;  // class not modelled
-        if (any_empty) detail::fail(path, row, "either all of mx,my,sx,sy,b or none must be given");
+        if (any_empty) failAt(path, row, "either all of mx,my,sx,sy,b or none must be given");
         ClassNoisePx n;
         n.mx = parseCsvNumber(f[1], path, row + ".mx");
         n.my = parseCsvNumber(f[2], path, row + ".my");
         n.sx = parseCsvNumber(f[3], path, row + ".sx");
         n.sy = parseCsvNumber(f[4], path, row + ".sy");
         n.b = parseCsvNumber(f[5], path, row + ".b");
-        if (n.sx <= 0 || n.sy <= 0) detail::fail(path, row + ".sx/sy", "expected positive scales");
-        if (n.b <= 0) detail::fail(path, row + ".b", "expected a positive exponent");
+        if (n.sx <= 0 || n.sy <= 0) failAt(path, row + ".sx/sy", "expected positive scales");
+        if (n.b <= 0) failAt(path, row + ".b", "expected a positive exponent");
         out[static_cast<std::size_t>(cat)] = n;
     }
     return out;
 }
 
 std::vector<double> numberArray(const json& gv, const std::string& key, std::size_t n, const std::string& file) {
-    return detail::asNumbers(detail::require(gv, key, file, key), n, file, key,
+    return asNumbers(requireKey(gv, key, file, key), n, file, key,
                              std::to_string(n) + " numbers (one per object, as many as \"uid\")");
 }
 
@@ -160,31 +159,31 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
 
     // floor.config: class names, room names and categories, room raster name.
     const std::string fc_path = in("floor.config");
-    const json fc = detail::readJsonFile(fc_path);
-    const json& semantic = detail::require(fc, "semantic", fc_path, "semantic");
-    const json& classes = detail::require(semantic, "classes", fc_path, "semantic.classes");
-    if (!classes.is_array() || classes.empty()) detail::fail(fc_path, "semantic.classes", "expected a non-empty list of names");
+    const json fc = readJsonFile(fc_path);
+    const json& semantic = requireKey(fc, "semantic", fc_path, "semantic");
+    const json& classes = requireKey(semantic, "classes", fc_path, "semantic.classes");
+    if (!classes.is_array() || classes.empty()) failAt(fc_path, "semantic.classes", "expected a non-empty list of names");
     for (std::size_t i = 0; i < classes.size(); ++i)
-        w.objects.class_names.push_back(detail::asString(classes[i], fc_path, "semantic.classes[" + std::to_string(i) + "]"));
+        w.objects.class_names.push_back(asString(classes[i], fc_path, "semantic.classes[" + std::to_string(i) + "]"));
     const std::size_t num_classes = w.objects.class_names.size();
     if (semantic.contains("categories")) {
         const json& cats = semantic["categories"];
-        if (!cats.is_array()) detail::fail(fc_path, "semantic.categories", "expected a list of names");
+        if (!cats.is_array()) failAt(fc_path, "semantic.categories", "expected a list of names");
         for (std::size_t i = 0; i < cats.size(); ++i)
-            w.objects.room_categories.push_back(detail::asString(cats[i], fc_path, "semantic.categories[" + std::to_string(i) + "]"));
+            w.objects.room_categories.push_back(asString(cats[i], fc_path, "semantic.categories[" + std::to_string(i) + "]"));
     }
     if (fc.contains("rooms")) {
         const json& rooms = fc["rooms"];
-        if (!rooms.is_array()) detail::fail(fc_path, "rooms", "expected a list");
+        if (!rooms.is_array()) failAt(fc_path, "rooms", "expected a list");
         for (std::size_t i = 0; i < rooms.size(); ++i) {
             const std::string key = "rooms[" + std::to_string(i) + "]";
             RoomInfo r;
-            r.id = static_cast<int>(detail::asInteger(detail::require(rooms[i], "id", fc_path, key + ".id"), fc_path, key + ".id")) + 1;
-            if (rooms[i].contains("name")) r.name = detail::asString(rooms[i]["name"], fc_path, key + ".name");
+            r.id = static_cast<int>(asInteger(requireKey(rooms[i], "id", fc_path, key + ".id"), fc_path, key + ".id")) + 1;
+            if (rooms[i].contains("name")) r.name = asString(rooms[i]["name"], fc_path, key + ".name");
             if (rooms[i].contains("purpose")) {
-                const long long p = detail::asInteger(rooms[i]["purpose"], fc_path, key + ".purpose");
+                const long long p = asInteger(rooms[i]["purpose"], fc_path, key + ".purpose");
                 if (p < 0 || static_cast<std::size_t>(p) >= w.objects.room_categories.size())
-                    detail::fail(fc_path, key + ".purpose", "index outside semantic.categories");
+                    failAt(fc_path, key + ".purpose", "index outside semantic.categories");
                 r.category = w.objects.room_categories[static_cast<std::size_t>(p)];
             }
             w.objects.rooms.push_back(r);
@@ -199,14 +198,14 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
     const SimpPixelFrame px{meta.resolution_m, meta.origin_x_m, meta.origin_y_m, static_cast<int>(w.floorplan.getSizeY())};
     std::string roomseg = in("roomseg.png");
     const bool roomseg_named = fc.contains("roomSeg");
-    if (roomseg_named) roomseg = in(detail::asString(fc["roomSeg"], fc_path, "roomSeg"));
+    if (roomseg_named) roomseg = in(asString(fc["roomSeg"], fc_path, "roomSeg"));
     if (fs::exists(roomseg)) {
         w.rooms = loadRoomMap(roomseg, meta.resolution_m, meta.origin_x_m, meta.origin_y_m);
         if (static_cast<unsigned>(w.rooms.ids.cols) != w.floorplan.getSizeX() ||
             static_cast<unsigned>(w.rooms.ids.rows) != w.floorplan.getSizeY())
             throw std::runtime_error(roomseg + ": size differs from the floor plan " + meta.image_path);
     } else if (roomseg_named) {
-        detail::fail(fc_path, "roomSeg", "file '" + roomseg + "' not found");
+        failAt(fc_path, "roomSeg", "file '" + roomseg + "' not found");
     }
 
     // class_noise.csv (optional): class frame, 0.05 m cells -> metres.
@@ -225,36 +224,36 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
 
     // global_variance.json: the objects.
     const std::string gv_path = in("global_variance.json");
-    const json gv = detail::readJsonFile(gv_path);
-    const json& uid = detail::require(gv, "uid", gv_path, "uid");
-    if (!uid.is_array()) detail::fail(gv_path, "uid", "expected a list of integers");
+    const json gv = readJsonFile(gv_path);
+    const json& uid = requireKey(gv, "uid", gv_path, "uid");
+    if (!uid.is_array()) failAt(gv_path, "uid", "expected a list of integers");
     const std::size_t n = uid.size();
     const auto category = numberArray(gv, "category", n, gv_path);
     const auto mx = numberArray(gv, "mx", n, gv_path), my = numberArray(gv, "my", n, gv_path);
     const auto sx = numberArray(gv, "sx", n, gv_path), sy = numberArray(gv, "sy", n, gv_path);
     const auto b = numberArray(gv, "b", n, gv_path);
-    const json& corners = detail::require(gv, "corners", gv_path, "corners");
+    const json& corners = requireKey(gv, "corners", gv_path, "corners");
     if (!corners.is_array() || corners.size() != n)
-        detail::fail(gv_path, "corners", std::to_string(n) + " corner lists expected (one per object, as many as \"uid\")");
+        failAt(gv_path, "corners", std::to_string(n) + " corner lists expected (one per object, as many as \"uid\")");
     std::set<long long> seen;
     for (std::size_t i = 0; i < n; ++i) {
         const std::string idx = "[" + std::to_string(i) + "]";
         MapObject o;
-        o.id = detail::asInteger(uid[i], gv_path, "uid" + idx);
-        if (!seen.insert(o.id).second) detail::fail(gv_path, "uid" + idx, "duplicate uid " + std::to_string(o.id));
+        o.id = asInteger(uid[i], gv_path, "uid" + idx);
+        if (!seen.insert(o.id).second) failAt(gv_path, "uid" + idx, "duplicate uid " + std::to_string(o.id));
         if (category[i] != std::floor(category[i]) || category[i] < 0 || category[i] >= static_cast<double>(num_classes))
-            detail::fail(gv_path, "category" + idx, "expected a class index in [0, " + std::to_string(num_classes) + ")");
+            failAt(gv_path, "category" + idx, "expected a class index in [0, " + std::to_string(num_classes) + ")");
         o.class_id = static_cast<int>(category[i]);
-        if (sx[i] <= 0 || sy[i] <= 0) detail::fail(gv_path, "sx/sy" + idx, "expected positive scales (px)");
-        if (b[i] <= 0) detail::fail(gv_path, "b" + idx, "expected a positive exponent");
-        const auto c = detail::asNumbers(corners[i], 8, gv_path, "corners" + idx, "8 numbers (4 pixel corners u0,v0,...,u3,v3)");
+        if (sx[i] <= 0 || sy[i] <= 0) failAt(gv_path, "sx/sy" + idx, "expected positive scales (px)");
+        if (b[i] <= 0) failAt(gv_path, "b" + idx, "expected a positive exponent");
+        const auto c = asNumbers(corners[i], 8, gv_path, "corners" + idx, "8 numbers (4 pixel corners u0,v0,...,u3,v3)");
         std::array<Eigen::Vector2d, 4> pts;
         for (std::size_t k = 0; k < 4; ++k) pts[k] = px.toWorld(Eigen::Vector2d(c[2 * k], c[2 * k + 1]));
         RectangleFit fit;
         try {
             fit = fitRectangle(pts);
         } catch (const std::invalid_argument& e) {
-            detail::fail(gv_path, "corners" + idx, e.what());
+            failAt(gv_path, "corners" + idx, e.what());
         }
         const double yaw = chooseYaw(fit, class_px[static_cast<std::size_t>(o.class_id)], sx[i], sy[i]);
         const bool swapped = std::abs(std::remainder(yaw - fit.yaw_rad, kPi)) > kPi / 4;
@@ -263,7 +262,7 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         try {
             h = classHeight(cname, options);
         } catch (const std::invalid_argument&) {
-            detail::fail(fc_path, "semantic.classes[" + std::to_string(o.class_id) + "]",
+            failAt(fc_path, "semantic.classes[" + std::to_string(o.class_id) + "]",
                          "no height for class '" + cname + "' (give one with --heights INI, section [class_heights])");
         }
         o.box = geometry::makeUprightBox(

@@ -1,36 +1,44 @@
 #pragma once
 /// \file JsonRead.h
-/// Private helpers of libs/world: read JSON files with error messages that name the file,
+/// Reading and writing the project's JSON files with error messages that name the file,
 /// the entry and the key ("objects.json: objects[3].size_m: expected 3 positive numbers").
+/// Shared by libs/world (world directories, the authors' map format) and libs/labels
+/// (detector files, camera frames, Omni3D labels).
 
 #include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
 
-namespace simp::world::detail {
+namespace simp::world {
 
-using nlohmann::json;
-
-/// Throws std::runtime_error("<file>: <key>: <what>").
-[[noreturn]] void fail(const std::string& file, const std::string& key, const std::string& what);
+/// Throws std::runtime_error("<file>: <key>: <what>") ("<file>: <what>" when `key` is empty).
+[[noreturn]] void failAt(const std::string& file, const std::string& key, const std::string& what);
 
 /// Parses a whole file; errors name the file (missing, unreadable, invalid JSON).
-json readJsonFile(const std::string& path);
-/// Writes `j` pretty-printed (indent 2), keys in insertion order; creates parent folders;
+nlohmann::json readJsonFile(const std::string& path);
+
+/// How writeJsonFile() lays out the text (the content is the same JSON either way).
+enum class JsonLayout {
+    Readable,  ///< compact, one line per element of containers that hold containers (diffable)
+    Indent1    ///< nlohmann's dump(1): every value on its own line, indent 1
+};
+/// Writes `j` (keys in insertion order) followed by a newline; creates parent folders;
 /// errors name the file.
-void writeJsonFile(const nlohmann::ordered_json& j, const std::string& path);
+void writeJsonFile(const nlohmann::ordered_json& j, const std::string& path,
+                   JsonLayout layout = JsonLayout::Readable);
 
 /// obj[key]; `key_path` is the full key used in messages (e.g. "objects[3].size_m").
-const json& require(const json& obj, const std::string& key, const std::string& file,
-                    const std::string& key_path);
+/// \throw "<file>: <key_path>: missing key" when absent.
+const nlohmann::json& requireKey(const nlohmann::json& obj, const std::string& key, const std::string& file,
+                                 const std::string& key_path);
 /// A finite number.
-double asNumber(const json& v, const std::string& file, const std::string& key_path);
+double asNumber(const nlohmann::json& v, const std::string& file, const std::string& key_path);
 /// An integer (a JSON integer, or a float with an integral value).
-long long asInteger(const json& v, const std::string& file, const std::string& key_path);
-std::string asString(const json& v, const std::string& file, const std::string& key_path);
+long long asInteger(const nlohmann::json& v, const std::string& file, const std::string& key_path);
+std::string asString(const nlohmann::json& v, const std::string& file, const std::string& key_path);
 /// An array of exactly n finite numbers (n = 0: any length); `expect` completes the message.
-std::vector<double> asNumbers(const json& v, std::size_t n, const std::string& file,
+std::vector<double> asNumbers(const nlohmann::json& v, std::size_t n, const std::string& file,
                               const std::string& key_path, const std::string& expect);
 
-}  // namespace simp::world::detail
+}  // namespace simp::world
