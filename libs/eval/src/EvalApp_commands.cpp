@@ -44,6 +44,12 @@ void writeText(const fs::path& path, const std::string& text) {
     f << text;
 }
 
+/// Writes a figure to `png` and names it on `out` ("figure: <png>").
+void writeFigure(const std::string& png, const cv::Mat& image, std::ostream& out) {
+    writePng(png, image);
+    out << "figure: " << png << "\n";
+}
+
 }  // namespace
 
 int EvalApp::runTraj(std::ostream& out) {
@@ -67,18 +73,8 @@ int EvalApp::runTraj(std::ostream& out) {
         throw std::invalid_argument(
             "simp-eval traj: bounds must be positive and the convergence fraction in (0, 1]");
 
-    const auto gt = io::readTum(gt_path);
-    const auto est = io::readTum(est_path);
-    if (gt.size() < 2)
-        throw std::invalid_argument("ground-truth file '" + gt_path + "': " + std::to_string(gt.size()) +
-                                    " poses, at least 2 are needed");
-    if (est.empty()) throw std::invalid_argument("estimate file '" + est_path + "': no poses");
-    TrajMetrics m;
-    try {
-        m = evaluateTrajectory(gt, est, p);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("'" + est_path + "' vs '" + gt_path + "': " + e.what());
-    }
+    const TrajectoryFiles files = readTrajectoryFiles(gt_path, est_path);
+    const TrajMetrics m = evaluateTrajectory(files, p);
     out << "trajectory evaluation: " << est_path << " against " << gt_path << "\n" << trajSummaryText(m, p);
     if (has("--png")) {
         world::World w;
@@ -87,8 +83,8 @@ int EvalApp::runTraj(std::ostream& out) {
             requireDir(options_.at("--world"), "world");
             w = world::loadWorld(options_.at("--world"));
         }
-        writePng(options_.at("--png"), drawTrajectoryFigure(gt, est, m, p, with_world ? &w : nullptr));
-        out << "figure: " << options_.at("--png") << "\n";
+        writeFigure(options_.at("--png"),
+                    drawTrajectoryFigure(files.ground_truth, files.estimate, m, p, with_world ? &w : nullptr), out);
     }
     if (has("--json")) out << toJson(m).dump() << "\n";
     return 0;
@@ -116,8 +112,7 @@ int EvalApp::runMap(std::ostream& out) {
         << " m)\n\n"
         << mapMarkdownTable(m) << "\n";
     if (has("--png")) {
-        writePng(options_.at("--png"), drawMapEvaluation(gt, map, m));
-        out << "figure: " << options_.at("--png") << "\n";
+        writeFigure(options_.at("--png"), drawMapEvaluation(gt, map, m), out);
     }
     if (has("--json")) out << toJson(m).dump() << "\n";
     return 0;
@@ -126,8 +121,7 @@ int EvalApp::runMap(std::ostream& out) {
 int EvalApp::runPlotMap(std::ostream& out) {
     const std::string dir = required("--world"), png = required("--png");
     requireDir(dir, "world");
-    writePng(png, drawObjectMap(world::loadWorld(dir)));
-    out << "figure: " << png << "\n";
+    writeFigure(png, drawObjectMap(world::loadWorld(dir)), out);
     return 0;
 }
 

@@ -68,19 +68,26 @@ TrajMetrics evaluateTrajectory(const std::vector<io::StampedPose2D>& ground_trut
     return m;
 }
 
+TrajectoryFiles readTrajectoryFiles(const std::string& gt_path, const std::string& est_path) {
+    TrajectoryFiles f{gt_path, est_path, io::readTum(gt_path), io::readTum(est_path)};
+    if (f.ground_truth.size() < 2)
+        throw std::invalid_argument("ground-truth file '" + gt_path + "': " + std::to_string(f.ground_truth.size()) +
+                                    " poses, at least 2 are needed");
+    if (f.estimate.empty()) throw std::invalid_argument("estimate file '" + est_path + "': no poses");
+    return f;
+}
+
+TrajMetrics evaluateTrajectory(const TrajectoryFiles& files, const TrajMetricsParams& params) {
+    try {
+        return evaluateTrajectory(files.ground_truth, files.estimate, params);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("'" + files.est_path + "' vs '" + files.gt_path + "': " + e.what());
+    }
+}
+
 TrajMetrics evaluateTrajectoryFiles(const std::string& gt_path, const std::string& est_path,
                                     const TrajMetricsParams& params) {
-    const auto gt = io::readTum(gt_path);
-    const auto est = io::readTum(est_path);
-    if (gt.size() < 2)
-        throw std::invalid_argument("ground-truth file '" + gt_path + "': " + std::to_string(gt.size()) +
-                                    " poses, at least 2 are needed");
-    if (est.empty()) throw std::invalid_argument("estimate file '" + est_path + "': no poses");
-    try {
-        return evaluateTrajectory(gt, est, params);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("'" + est_path + "' vs '" + gt_path + "': " + e.what());
-    }
+    return evaluateTrajectory(readTrajectoryFiles(gt_path, est_path), params);
 }
 
 }  // namespace simp::eval

@@ -23,6 +23,7 @@
 #include <simp/io/Tum.h>
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace simp::eval {
@@ -66,6 +67,23 @@ struct TrajMetrics {
 TrajMetrics evaluateTrajectory(const std::vector<io::StampedPose2D>& ground_truth,
                                const std::vector<io::StampedPose2D>& estimate,
                                const TrajMetricsParams& params = {});
+
+/// Ground truth and estimate as read from their TUM files.
+struct TrajectoryFiles {
+    std::string gt_path;                            ///< ground-truth TUM file
+    std::string est_path;                           ///< estimate TUM file
+    std::vector<io::StampedPose2D> ground_truth;    ///< time-ordered poses of gt_path
+    std::vector<io::StampedPose2D> estimate;        ///< time-ordered poses of est_path
+};
+
+/// Reads both TUM files.
+/// \throw std::invalid_argument naming the file when the ground truth has fewer than 2 poses or
+///        the estimate none (and io::readTum's errors, which name the file and line).
+TrajectoryFiles readTrajectoryFiles(const std::string& gt_path, const std::string& est_path);
+
+/// evaluateTrajectory() on files read by readTrajectoryFiles(); its errors are prefixed with
+/// "'<est_path>' vs '<gt_path>': ".
+TrajMetrics evaluateTrajectory(const TrajectoryFiles& files, const TrajMetricsParams& params = {});
 
 /// Reads both TUM files and evaluates; error messages name the offending file.
 TrajMetrics evaluateTrajectoryFiles(const std::string& gt_path, const std::string& est_path,
