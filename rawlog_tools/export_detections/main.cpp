@@ -1,10 +1,10 @@
 /// simp-export-detections: a rawlog's 3D detections -> CSV (the ROS detection-array layout) and
 /// Omni3D predictions JSON, its odometry path -> TUM. doc/detector-io.md.
+#include <simp/io/ToolArgs.h>
 #include <simp/io/Tum.h>
 #include <simp/labels/DetectionRawlog.h>
 #include <simp/labels/Omni3DPredictions.h>
 #include <simp/labels/RosDetectionsCsv.h>
-#include <simp/labels/ToolArgs.h>
 
 #include <exception>
 #include <iostream>
@@ -12,7 +12,7 @@
 int main(int argc, char** argv) {
     try {
         const auto args =
-            simp::labels::parseToolArgs(argc, argv, {"rawlog"}, {"out-csv", "out-json", "out-tum"});
+            simp::io::parseToolArgs(argc, argv, {"rawlog"}, {"out-csv", "out-json", "out-tum"});
         if (args.help) {
             std::cout << "Usage: simp-export-detections --rawlog Q.rawlog [--out-csv D.csv] [--out-json D.json] [--out-tum odom.tum]\n"
                          "At least one output. CSV = simp-import-ros-detections input, JSON = simp-import-omni3d input,\n"

@@ -1,16 +1,16 @@
 /// simp-import-omni3d: Cube R-CNN / Omni3D predictions + robot poses + camera rig -> rawlog
 /// (actions + sensory frames). doc/detector-io.md.
+#include <simp/io/ToolArgs.h>
 #include <simp/io/Tum.h>
 #include <simp/labels/DetectionRawlog.h>
 #include <simp/labels/Omni3DPredictions.h>
-#include <simp/labels/ToolArgs.h>
 
 #include <exception>
 #include <iostream>
 
 int main(int argc, char** argv) {
     try {
-        const auto args = simp::labels::parseToolArgs(argc, argv, {"predictions", "poses", "rig", "out"}, {});
+        const auto args = simp::io::parseToolArgs(argc, argv, {"predictions", "poses", "rig", "out"}, {});
         if (args.help) {
             std::cout << "Usage: simp-import-omni3d --predictions P.json --poses poses.tum --rig rig.ini|rig.json --out Q.rawlog\n"
                          "Writes one CActionCollection (odometry increment between the interpolated poses) +\n"

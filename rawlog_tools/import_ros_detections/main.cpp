@@ -1,9 +1,9 @@
 /// simp-import-ros-detections: the authors' ROS detection array (CSV, 8 corners per object) +
 /// robot poses + camera rig -> rawlog. doc/detector-io.md.
+#include <simp/io/ToolArgs.h>
 #include <simp/io/Tum.h>
 #include <simp/labels/DetectionRawlog.h>
 #include <simp/labels/RosDetectionsCsv.h>
-#include <simp/labels/ToolArgs.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <exception>
@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
     try {
-        const auto args = simp::labels::parseToolArgs(argc, argv, {"csv", "poses", "rig", "out"}, {});
+        const auto args = simp::io::parseToolArgs(argc, argv, {"csv", "poses", "rig", "out"}, {});
         if (args.help) {
             std::cout << "Usage: simp-import-ros-detections --csv D.csv --poses poses.tum --rig rig.ini|rig.json --out Q.rawlog\n"
                          "Rows: timestamp, camera (name or rig index), then per object 8 corners x (x,y,z) in the\n"

@@ -1,7 +1,7 @@
 /// \file LabelsApp.cpp
 #include <mrpt/config/CConfigFile.h>
+#include <simp/io/ToolArgs.h>
 #include <simp/labels/LabelsApp.h>
-#include <simp/labels/ToolArgs.h>
 #include <simp/world/World.h>
 
 #include <filesystem>
@@ -22,7 +22,7 @@ std::string LabelsApp::usage() {
 }
 
 bool LabelsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
-    const ToolArgs a = parseToolArgs(argc, argv, {"world", "frames", "detections2d", "out"}, {"config", "iou", "poses", "rig"});
+    const io::ToolArgs a = io::parseToolArgs(argc, argv, {"world", "frames", "detections2d", "out"}, {"config", "iou", "poses", "rig"});
     if (a.help) {
         out << usage();
         return false;

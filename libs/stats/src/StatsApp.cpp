@@ -1,5 +1,6 @@
 /// \file StatsApp.cpp
 #include <mrpt/config/CConfigFile.h>
+#include <simp/io/ToolArgs.h>
 #include <simp/stats/NoiseModelFiles.h>
 #include <simp/stats/NoisePlot.h>
 #include <simp/stats/StatsApp.h>
@@ -28,34 +29,24 @@ std::string StatsApp::usage() {
 }
 
 bool StatsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
-    std::optional<double> delta;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            out << usage();
-            return false;
-        }
-        if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value (see --help)");
-        const std::string v = argv[++i];
-        if (a == "--rawlog") rawlog_path = v;
-        else if (a == "--poses") poses_path = v;
-        else if (a == "--world") world_path = v;
-        else if (a == "--out") out_dir = v;
-        else if (a == "--config") config_path = v;
-        else if (a == "--delta") {
-            try {
-                std::size_t used = 0;
-                delta = std::stod(v, &used);
-                if (used != v.size()) throw std::invalid_argument(v);
-            } catch (const std::exception&) {
-                throw std::invalid_argument("--delta: expected a number of metres, got '" + v + "'");
-            }
-        } else
-            throw std::invalid_argument("unknown option " + a + " (see --help)");
+    const io::ToolArgs a = io::parseToolArgs(argc, argv, {"rawlog", "poses", "world", "out"}, {"config", "delta"});
+    if (a.help) {
+        out << usage();
+        return false;
     }
-    for (const auto& [name, value] : {std::pair{"--rawlog", rawlog_path}, std::pair{"--poses", poses_path},
-                                      std::pair{"--world", world_path}, std::pair{"--out", out_dir}})
-        if (value.empty()) throw std::invalid_argument(std::string("missing required option ") + name + " (see --help)");
+    rawlog_path = a.get("rawlog"), poses_path = a.get("poses"), world_path = a.get("world"), out_dir = a.get("out");
+    if (a.has("config")) config_path = a.get("config");
+    std::optional<double> delta;
+    if (a.has("delta")) {
+        const std::string& v = a.get("delta");
+        try {
+            std::size_t used = 0;
+            delta = std::stod(v, &used);
+            if (used != v.size()) throw std::invalid_argument(v);
+        } catch (const std::exception&) {
+            throw std::invalid_argument("--delta: expected a number of metres, got '" + v + "'");
+        }
+    }
     if (!config_path.empty()) {
         if (!fs::exists(config_path)) throw std::invalid_argument(config_path + ": config file not found");
         options.loadFromConfigFile(mrpt::config::CConfigFile(config_path), "simp-stats");

@@ -1,10 +1,10 @@
 /// \file ToolArgs.cpp
-#include <simp/labels/ToolArgs.h>
+#include <simp/io/ToolArgs.h>
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace simp::labels {
+namespace simp::io {
 
 ToolArgs parseToolArgs(int argc, const char* const* argv, const std::vector<std::string>& required,
                        const std::vector<std::string>& optional) {
@@ -28,4 +28,4 @@ ToolArgs parseToolArgs(int argc, const char* const* argv, const std::vector<std:
     return a;
 }
 
-}  // namespace simp::labels
+}  // namespace simp::io

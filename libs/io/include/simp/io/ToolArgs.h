@@ -1,12 +1,12 @@
 #pragma once
 /// \file ToolArgs.h
-/// Command lines of the detector tools: `--key value` pairs, some required, --help.
+/// Command lines of the apps and rawlog tools: `--key value` pairs, some required, --help.
 
 #include <map>
 #include <string>
 #include <vector>
 
-namespace simp::labels {
+namespace simp::io {
 
 struct ToolArgs {
     std::map<std::string, std::string> values;  ///< key without "--" -> value
@@ -21,4 +21,4 @@ struct ToolArgs {
 ToolArgs parseToolArgs(int argc, const char* const* argv, const std::vector<std::string>& required,
                        const std::vector<std::string>& optional);
 
-}  // namespace simp::labels
+}  // namespace simp::io
