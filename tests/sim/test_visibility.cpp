@@ -79,8 +79,9 @@ TEST(SimVisibility, NearerObjectOccludes) {
 }
 
 TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
-    // many detections of one rotated object: offsets rotated back into the object frame have the
-    // model's mean and covariance (Eq. shiftdist), 4 standard errors
+    // many detections of one rotated object at the reference distance, each with its own noise seed
+    // (independent persistent parts): offsets rotated back into the noise frame have the model's
+    // mean and covariance (Eq. shiftdist), 4 standard errors
     simp::world::NoiseModel m;
     m.mean_m = {0.1, -0.05};
     m.cov_m2 << 0.02, 0.0, 0.0, 0.08;
@@ -90,13 +91,14 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
     p.min_confidence = 0;
     const auto o = cabinetAt(4.0, 2.0);
     const auto view = cameraAt(1.0, 2.0, 0.0);
-    const double yaw = simp::geometry::yawOf(o.box);
+    ASSERT_NEAR((o.box.center - view.T_world_camera.translation()).head<2>().norm(), p.reference_distance_m, 1e-9);
+    const double yaw = simp::sim::noiseFrameYaw(o.box);
     simp::sim::Rng rng(3);
     const int n = 5000;
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
     Eigen::Matrix2d sum2 = Eigen::Matrix2d::Zero();
     for (int i = 0; i < n; ++i) {
-        const auto d = simp::sim::detectObject(view, o, m, 14, p, rng);
+        const auto d = simp::sim::detectObject(view, o, m, 14, p, rng, static_cast<std::uint64_t>(i));
         ASSERT_TRUE(d.has_value());
         EXPECT_EQ(d->class_id, o.class_id);
         const Eigen::Vector3d c_world = view.T_world_camera * d->box_in_camera.center;
@@ -114,6 +116,38 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
         EXPECT_NEAR(cov(k, k), m.cov_m2(k, k), 4 * m.cov_m2(k, k) * std::sqrt(2.0 / n));
     }
     EXPECT_NEAR(cov(0, 1), 0.0, 4 * std::sqrt(m.cov_m2(0, 0) * m.cov_m2(1, 1) / n));
+}
+
+TEST(SimDetection, NoiseIsPersistentPerViewpointAndGrowsAlongTheRay) {
+    simp::world::NoiseModel m;
+    m.cov_m2 << 0.02, 0.0, 0.0, 0.08;
+    simp::sim::DetectorParams p;
+    const auto o = cabinetAt(4.0, 2.0);
+    // the same viewpoint and seed: the persistent parts are equal, the difference of two offsets is
+    // per-frame jitter only, variance 2 (1 - f) Sigma (trace compared, 4 standard errors)
+    const auto view = cameraAt(1.0, 2.0, 0.0);
+    simp::sim::Rng rng(5);
+    const int n = 4000;
+    double sum_d2 = 0;
+    for (int i = 0; i < n; ++i) {
+        const Eigen::Vector2d a = simp::sim::centreOffsetInWorld(view, o, m, p, 77, rng);
+        const Eigen::Vector2d b = simp::sim::centreOffsetInWorld(view, o, m, p, 77, rng);
+        sum_d2 += (a - b).squaredNorm();
+    }
+    const double expected = 2 * (1 - p.persistent_variance_fraction) * m.cov_m2.trace();
+    EXPECT_NEAR(sum_d2 / n, expected, 4 * expected * std::sqrt(2.0 / n));
+    // at twice the reference distance the error along the ray (world x here) has twice the std
+    const auto far_view = cameraAt(4.0 - 2 * p.reference_distance_m, 2.0, 0.0);
+    const double yaw = simp::sim::noiseFrameYaw(o.box);
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(yaw).toRotationMatrix();
+    const Eigen::Matrix2d cov_w = R * m.cov_m2 * R.transpose();
+    double s_near = 0, s_far = 0;
+    for (int i = 0; i < n; ++i) {
+        s_near += std::pow(simp::sim::centreOffsetInWorld(view, o, m, p, static_cast<std::uint64_t>(i), rng).x(), 2);
+        s_far += std::pow(simp::sim::centreOffsetInWorld(far_view, o, m, p, static_cast<std::uint64_t>(i), rng).x(), 2);
+    }
+    EXPECT_NEAR(s_near / n, cov_w(0, 0), 4 * cov_w(0, 0) * std::sqrt(2.0 / n));
+    EXPECT_NEAR(s_far / n, 4 * cov_w(0, 0), 4 * 4 * cov_w(0, 0) * std::sqrt(2.0 / n));
 }
 
 TEST(SimDetection, MissesWrongLabelsAndScores) {

@@ -7,9 +7,14 @@
 
 namespace simp::mapping {
 
+double noiseFrameYaw(const geometry::Box3D& box) {
+    const double yaw = geometry::yawOf(box);
+    return box.size.x() > box.size.y() ? yaw + M_PI / 2 : yaw;
+}
+
 double centerScore(const geometry::Box3D& o1, const world::NoiseModel& noise, const Eigen::Vector3d& c) {
     // Eq. shiftdist: mu_o = mu + c_o, Sigma_o = R_o Sigma R_o^T  <=>  evaluate in the object frame.
-    const double yaw = geometry::yawOf(o1);
+    const double yaw = noiseFrameYaw(o1);
     const double cs = std::cos(yaw), sn = std::sin(yaw);
     const Eigen::Vector2d delta = (c - o1.center).head<2>();
     const Eigen::Vector2d local(cs * delta.x() + sn * delta.y(), -sn * delta.x() + cs * delta.y());

@@ -4,6 +4,7 @@
 #include <mrpt/math/wrap2pi.h>
 #include <simp/geometry/Hungarian.h>
 #include <simp/mapping/AssociationCost.h>
+#include <simp/mapping/DetectionBox.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/mapping/RoomSegmentation.h>
 
@@ -162,7 +163,7 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         const double range = d.box_in_camera.center.norm();
         if (range < f.min_range_m || range > f.max_range_m) { ++m_stats.rejected_range; continue; }
         LocalObject o;
-        o.box = geometry::canonicalizeUpright(obs.boxInWorld(i, robot_pose));
+        o.box = objectBoxFromDetection(obs.boxInWorld(i, robot_pose));
         if (!o.box.isValid(1e-4)) { ++m_stats.rejected_invalid; continue; }
         if (current_room != 0) {
             const int r = roomOf(o.box.center.x(), o.box.center.y());

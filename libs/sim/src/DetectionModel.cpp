@@ -21,6 +21,11 @@ std::optional<obs::Detection3D> finish(const CameraView& view, obs::Detection3D 
 
 }  // namespace
 
+double noiseFrameYaw(const geometry::Box3D& box) {
+    const double yaw = geometry::yawOf(box);
+    return box.size.x() > box.size.y() ? yaw + M_PI / 2 : yaw;
+}
+
 world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p) {
     if (o.noise) return *o.noise;
     if (o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < map.class_noise.size() &&
@@ -47,15 +52,43 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
     return out;
 }
 
+Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObject& o, const world::NoiseModel& noise,
+                                    const DetectorParams& p, std::uint64_t noise_seed, Rng& rng) {
+    world::NoiseModel zero_mean = noise;
+    zero_mean.mean_m.setZero();
+    const Eigen::Vector2d cam = view.T_world_camera.translation().head<2>();
+    const Eigen::Vector2d ray = o.box.center.head<2>() - cam;
+    const double dist = ray.norm();
+    // persistent part: one draw per (sequence, object, viewpoint cell)
+    Eigen::Vector2d e = Eigen::Vector2d::Zero();
+    const double f = p.persistent_variance_fraction;
+    if (f > 0) {
+        const double bearing = std::atan2(-ray.y(), -ray.x());  // object -> camera (rad)
+        const auto cell_a = static_cast<std::int64_t>(std::floor(bearing * 180.0 / M_PI / p.viewpoint_bin_deg));
+        const auto cell_d = static_cast<std::int64_t>(std::floor(dist / p.viewpoint_bin_m));
+        std::uint64_t h = noise_seed ^ 0x9E3779B97F4A7C15ULL;
+        for (const std::int64_t v : {static_cast<std::int64_t>(o.id), cell_a, cell_d})
+            h = (h ^ static_cast<std::uint64_t>(v)) * 0x100000001B3ULL + 0x9E3779B97F4A7C15ULL;
+        Rng view_rng(h);
+        e += std::sqrt(f) * sampleCentreOffset(zero_mean, view_rng);
+    }
+    if (f < 1) e += std::sqrt(1.0 - f) * sampleCentreOffset(zero_mean, rng);
+    // Eq. shiftdist: the class distribution rotated into the object's ground frame
+    const Eigen::Rotation2Dd R_o(noiseFrameYaw(o.box));
+    Eigen::Vector2d dev = R_o * e;
+    if (dist > 1e-9) {  // depth error along the viewing ray grows with distance
+        const Eigen::Vector2d u = ray / dist;
+        dev += (dist / p.reference_distance_m - 1.0) * u.dot(dev) * u;
+    }
+    return R_o * noise.mean_m + dev;
+}
+
 std::optional<obs::Detection3D> detectObject(const CameraView& view, const world::MapObject& o,
                                              const world::NoiseModel& noise, std::size_t num_classes,
-                                             const DetectorParams& p, Rng& rng) {
+                                             const DetectorParams& p, Rng& rng, std::uint64_t noise_seed) {
     if (!rng.bernoulli(p.detection_probability)) return std::nullopt;
-    // Eq. shiftdist: the class distribution rotated into the object's ground frame
     const double yaw = geometry::yawOf(o.box);
-    const Eigen::Vector2d offset = sampleCentreOffset(noise, rng);
-    const Eigen::Rotation2Dd R_o(yaw);
-    const Eigen::Vector2d c_xy = o.box.center.head<2>() + R_o * offset;
+    const Eigen::Vector2d c_xy = o.box.center.head<2>() + centreOffsetInWorld(view, o, noise, p, noise_seed, rng);
     const double z = o.box.center.z() + rng.normal(0.0, p.z_std_m);
     Eigen::Vector3d size = o.box.size;
     for (int k = 0; k < 3; ++k) size[k] = std::max(0.02, size[k] * (1.0 + rng.normal(0.0, p.size_std_fraction)));

@@ -86,6 +86,10 @@ void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, co
     confidence_false_mean = cfg.read_double(s, "confidence_false_mean", confidence_false_mean);
     confidence_false_std = cfg.read_double(s, "confidence_false_std", confidence_false_std);
     min_confidence = cfg.read_double(s, "min_confidence", min_confidence);
+    reference_distance_m = cfg.read_double(s, "reference_distance_m", reference_distance_m);
+    persistent_variance_fraction = cfg.read_double(s, "persistent_variance_fraction", persistent_variance_fraction);
+    viewpoint_bin_deg = cfg.read_double(s, "viewpoint_bin_deg", viewpoint_bin_deg);
+    viewpoint_bin_m = cfg.read_double(s, "viewpoint_bin_m", viewpoint_bin_m);
     check(prob(detection_probability), s, "detection_probability", "must be in [0, 1]");
     check(default_noise_std_m > 0, s, "default_noise_std_m", "must be > 0");
     check(z_std_m >= 0 && size_std_fraction >= 0 && yaw_std_rad >= 0, s, "z_std_m/size_std_fraction/yaw_std_rad",
@@ -94,6 +98,9 @@ void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, co
     check(prob(confidence_true_mean) && prob(confidence_false_mean), s, "confidence_*_mean", "must be in [0, 1]");
     check(confidence_true_std >= 0 && confidence_false_std >= 0, s, "confidence_*_std", "must be >= 0");
     check(prob(min_confidence), s, "min_confidence", "must be in [0, 1]");
+    check(reference_distance_m > 0, s, "reference_distance_m", "must be > 0");
+    check(prob(persistent_variance_fraction), s, "persistent_variance_fraction", "must be in [0, 1]");
+    check(viewpoint_bin_deg > 0 && viewpoint_bin_m > 0, s, "viewpoint_bin_deg/viewpoint_bin_m", "must be > 0");
 }
 
 void FalsePositiveParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {

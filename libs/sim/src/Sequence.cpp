@@ -62,6 +62,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     Rng master(seed);
     Rng rng_changes(master.split()), rng_traj(master.split()), rng_people(master.split()), rng_det(master.split()),
         rng_odo(master.split());
+    const std::uint64_t noise_seed = master.split();  // persistent detection errors (doc/simulator.md)
     SequenceSummary summary;
 
     // the world of this sequence (long-term change) and what the robot must drive around
@@ -140,7 +141,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
                     const auto& o = scene[v.index];
                     const bool is_person = v.index >= n_static;
                     const auto noise = is_person ? person_noise : noiseFor(w.objects, o, params.detector);
-                    if (auto d = detectObject(view, o, noise, names.size(), params.detector, rng_det)) {
+                    if (auto d = detectObject(view, o, noise, names.size(), params.detector, rng_det, noise_seed)) {
                         dets.push_back(*d);
                         ++(is_person ? summary.person_detections : summary.true_detections);
                     }

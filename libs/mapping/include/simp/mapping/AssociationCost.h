@@ -9,9 +9,15 @@
 
 namespace simp::mapping {
 
+/// Yaw (rad) of the frame the class noise models are expressed in: y along the box's longer
+/// horizontal side, x along the shorter one (the convention of the authors' global_variance.csv,
+/// the same as the simulator's simp::sim::noiseFrameYaw); independent of which of the box's 4
+/// equivalent upright frames `box` uses.
+double noiseFrameYaw(const geometry::Box3D& box);
+
 /// p_o1(c | l): the class noise density centred on object o1, evaluated at the point c,
 /// unnormalized to [0, 1]: exp(-0.5 m^b) with m the Mahalanobis distance of
-/// d = R_o1(yaw)^T (c - c_o1)_xy - mu in the object frame on the ground
+/// d = R(noiseFrameYaw(o1))^T (c - c_o1)_xy - mu in the noise frame on the ground
 /// (Eq. perclassdist / shiftdist with the authors' exponent b).
 double centerScore(const geometry::Box3D& o1, const world::NoiseModel& noise, const Eigen::Vector3d& c);
 

@@ -16,6 +16,12 @@
 
 namespace simp::sim {
 
+/// Yaw (rad) of the frame the class noise models are expressed in (Eq. shiftdist): y along the
+/// object's longer horizontal side, x along the shorter one. This is the convention of the authors'
+/// global_variance.csv (a board's large scale lies along its length whichever way it faces);
+/// the mapper uses the same (simp::mapping::noiseFrameYaw).
+double noiseFrameYaw(const geometry::Box3D& box);
+
 /// The centre-noise model used for object `o`: its own, else its class's, else an isotropic
 /// Gaussian of std default_noise_std_m.
 world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p);
@@ -24,13 +30,23 @@ world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObje
 /// (Omni3D: size = (W, H, L), H along the box's y axis, which points down like the camera's y).
 geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const Eigen::Isometry3d& T_camera_world);
 
+/// The centre offset (m, world frame, on the ground) of one detection of `o` seen from `view`
+/// (doc/simulator.md "Detection noise"): e = mu + sqrt(f) e_view + sqrt(1 - f) e_frame in the object
+/// frame (Eq. shiftdist), e_view and e_frame zero-mean draws of `noise`'s shape, f =
+/// persistent_variance_fraction; e_view is drawn from a generator seeded by (noise_seed, o.id,
+/// viewpoint cell), so it repeats for similar viewpoints; e_frame comes from `rng`. Then the
+/// deviation's component along the horizontal viewing ray is scaled by distance /
+/// reference_distance_m (depth error of a monocular detector). At the reference distance the
+/// offset has the model's mean and covariance (offsetCovariance()).
+Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObject& o, const world::NoiseModel& noise,
+                                    const DetectorParams& p, std::uint64_t noise_seed, Rng& rng);
+
 /// A detection of object `o` (true class `class_id` of `num_classes`): with probability
-/// detection_probability; centre = c_o + R_o * offset with offset ~ `noise` (object frame on the
-/// ground, Eq. shiftdist), height, size and yaw perturbed; sometimes a wrong label. nullopt when
-/// missed or scored below min_confidence.
+/// detection_probability; centre = c_o + centreOffsetInWorld(), height, size and yaw perturbed;
+/// sometimes a wrong label. nullopt when missed or scored below min_confidence.
 std::optional<obs::Detection3D> detectObject(const CameraView& view, const world::MapObject& o,
                                              const world::NoiseModel& noise, std::size_t num_classes,
-                                             const DetectorParams& p, Rng& rng);
+                                             const DetectorParams& p, Rng& rng, std::uint64_t noise_seed = 0);
 
 /// A phantom box of a random class at a random free spot in the camera's view (line of sight
 /// through `walls`), scored like a false detection; nullopt when no spot was found quickly.

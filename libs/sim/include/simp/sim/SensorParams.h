@@ -52,6 +52,16 @@ struct DetectorParams {
     double confidence_true_mean = 0.85, confidence_true_std = 0.08;   ///< score of true detections
     double confidence_false_mean = 0.55, confidence_false_std = 0.12; ///< score of false ones
     double min_confidence = 0.3;           ///< detections scoring below are not reported
+    /// Centre noise structure (doc/simulator.md "Detection noise"): the class model holds at this
+    /// camera -> object distance (m); the error component along the viewing ray scales with
+    /// distance / reference_distance_m.
+    double reference_distance_m = 3.0;
+    /// Fraction of the centre-noise variance that is persistent per object and viewpoint (the same
+    /// object seen from a similar pose gives a similar error); the rest is per-frame jitter.
+    double persistent_variance_fraction = 0.6;
+    /// Viewpoint cells of the persistent component: bearing object -> camera (deg) and distance (m).
+    double viewpoint_bin_deg = 45.0;
+    double viewpoint_bin_m = 1.5;
 
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
