@@ -143,3 +143,27 @@ TEST(MapMetrics, BadInputThrowsNamingTheObject) {
     EXPECT_EQ(m.per_class.size(), 1u);
     EXPECT_EQ(m.recall, 0.0);
 }
+
+TEST(MapMetrics, ClassSelectionLeavesOtherClassesOut) {
+    // Same maps as above; evaluating only table and chair drops the plant (no GT: precision 0)
+    // and the sofa (nothing predicted: recall 0) from the averages, as the paper's Table I does
+    // for classes the mapper does not build.
+    const auto gt = mapWith({"table", "chair", "sofa"},
+                            {object(0, 0, 0, 2, 1), object(0, 5, 0, 2, 1), object(1, 10, 10, 0.5, 0.5),
+                             object(2, -5, -5, 2, 1)});
+    const auto pred = mapWith({"chair", "table", "plant"},
+                              {object(1, 0.5, 0, 2, 1, 0.5), object(1, 20, 20, 2, 1), object(0, 10.25, 10, 0.5, 0.5),
+                               object(2, 3, 3, 0.4, 0.4)});
+    MapMatchParams only;
+    only.classes = {"table", "chair"};
+    const auto m = evaluateMap(gt, pred, only);
+    ASSERT_EQ(m.per_class.size(), 2u);
+    EXPECT_NEAR(m.iou, (0.6 + 1.0 / 3.0) / 2.0, 1e-9);
+    EXPECT_NEAR(m.precision, (0.5 + 1.0) / 2.0, 1e-12);
+    EXPECT_NEAR(m.recall, (0.5 + 1.0) / 2.0, 1e-12);
+    EXPECT_TRUE(m.false_pred.size() == 1u);  // the far table; the plant is not evaluated
+    // Selecting only classes that neither map has is an error, not a silent 0.
+    MapMatchParams none;
+    none.classes = {"piano"};
+    EXPECT_THROW(evaluateMap(gt, pred, none), std::invalid_argument);
+}

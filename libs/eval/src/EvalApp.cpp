@@ -15,7 +15,7 @@ const std::map<std::string, std::map<std::string, bool>>& knownOptions() {
           {"--max-trans", true}, {"--max-rot", true}, {"--max-outside", true}, {"--fraction", true}}},
         {"map",
          {{"--gt", true}, {"--map", true}, {"--json", false}, {"--png", true}, {"--config", true},
-          {"--max-center-dist", true}}},
+          {"--max-center-dist", true}, {"--classes", true}}},
         {"plot-map", {{"--world", true}, {"--png", true}}},
         {"batch", {{"--config", true}, {"--out", true}, {"--cores", true}}},
     };
@@ -32,6 +32,7 @@ std::string EvalApp::usage() {
            "                 [--config INI] [--max-trans M] [--max-rot RAD] [--max-outside S] [--fraction F]\n"
            "      success, convergence time, ATE after convergence (defaults: 0.3 m, pi/4 rad, 1.5 s, 0.95)\n"
            "  simp-eval map --gt W --map M [--json] [--png F] [--config INI] [--max-center-dist M]\n"
+           "                [--classes a,b,...]   (evaluate only these classes)\n"
            "      per-class footprint IoU, precision, recall of the object map M against W (gate 1.0 m)\n"
            "  simp-eval plot-map --world W --png F\n"
            "      the object map of W over its floor plan, boxes coloured by class\n"

@@ -15,6 +15,7 @@
 #include <iostream>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <stdexcept>
 
 #include <unistd.h>
@@ -100,6 +101,12 @@ int EvalApp::runMap(std::ostream& out) {
             openIni(options_.at("--config"))->read_double("map_metrics", "max_center_dist_m", p.max_center_dist_m);
     p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m);
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("simp-eval map: --max-center-dist must be > 0");
+    if (has("--classes")) {
+        std::stringstream list(options_.at("--classes"));
+        for (std::string name; std::getline(list, name, ',');)
+            if (!name.empty()) p.classes.push_back(name);
+        if (p.classes.empty()) throw std::invalid_argument("simp-eval map: --classes needs at least one class name");
+    }
     const world::World gt = world::loadWorld(gt_dir);
     const world::World map = world::loadWorld(map_dir);
     MapMetrics m;

@@ -33,8 +33,18 @@ std::map<std::string, std::vector<std::size_t>> objectsByClass(const world::Obje
 
 MapMetrics evaluateMap(const world::ObjectMapData& ground_truth, const world::ObjectMapData& predicted,
                        const MapMatchParams& params) {
-    const auto gt_by_class = objectsByClass(ground_truth, "ground-truth");
-    const auto pred_by_class = objectsByClass(predicted, "predicted");
+    auto gt_by_class = objectsByClass(ground_truth, "ground-truth");
+    auto pred_by_class = objectsByClass(predicted, "predicted");
+    if (!params.classes.empty()) {
+        const auto keepOnlySelected = [&](std::map<std::string, std::vector<std::size_t>>& by_class) {
+            for (auto it = by_class.begin(); it != by_class.end();)
+                it = std::find(params.classes.begin(), params.classes.end(), it->first) == params.classes.end()
+                         ? by_class.erase(it)
+                         : std::next(it);
+        };
+        keepOnlySelected(gt_by_class);
+        keepOnlySelected(pred_by_class);
+    }
     if (gt_by_class.empty() && pred_by_class.empty())
         throw std::invalid_argument("map evaluation: neither the ground-truth nor the predicted map has objects");
 

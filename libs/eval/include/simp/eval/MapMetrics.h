@@ -6,7 +6,8 @@
 ///
 /// Definitions (doc/evaluation.md):
 ///  - Classes are compared by name (the two maps may order their class lists differently).
-///    The classes evaluated are those with at least one object in either map.
+///    The classes evaluated are those with at least one object in either map (restricted to
+///    MapMatchParams::classes when that list is given).
 ///  - Matching per class: Hungarian algorithm (simp::geometry::solveAssignment) on the cost
 ///    1 - IoU_fp, IoU_fp = IoU of the ground footprints (convex polygons, exact). A pair is
 ///    admissible only when IoU_fp > 0 and the planar distance of the box centres is <=
@@ -27,6 +28,9 @@ namespace simp::eval {
 
 struct MapMatchParams {
     double max_center_dist_m = 1.0;  ///< centre-distance gate (m, planar) of an admissible pair
+    /// When not empty: evaluate only these classes (objects of other classes are left out of both
+    /// maps), e.g. the classes a mapper is configured to build, as the paper's Table I does.
+    std::vector<std::string> classes;
 };
 
 /// One matched pair: indices into ObjectMapData::objects of each map.
