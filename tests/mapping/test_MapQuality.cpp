@@ -1,0 +1,54 @@
+// Map quality end to end (doc/results.md): simulator world + one ground-truth-posed sequence ->
+// simp-map's builder -> simp::eval::evaluateMap against the world, over the paper's Table I classes.
+#include <gtest/gtest.h>
+#include <simp/eval/MapMetrics.h>
+#include <simp/mapping/MapApp.h>
+#include <simp/sim/SimApp.h>
+#include <simp/world/World.h>
+
+#include <filesystem>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+TEST(MapQuality, BuiltInOfficeKnownPoses) {
+    const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "mapping" / "quality";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string W = (dir / "W").string(), Q = (dir / "Q").string(), M = (dir / "M").string();
+    std::ostringstream log;
+    const auto sim = [&](const std::vector<std::string>& args) {
+        simp::sim::SimApp app;
+        if (app.initialize(args, log)) app.run(log);
+    };
+    sim({"world", "--builtin", "office", "--rooms", "4", "--seed", "7", "--out", W});
+    sim({"sequence", "--world", W, "--seed", "7", "--duration", "240", "--out", Q});
+    simp::mapping::MapAppArgs a;
+    a.world_dir = W;
+    a.rawlog_path = Q + "/sequence.rawlog";
+    a.poses_path = Q + "/groundtruth.tum";
+    a.out_dir = M;
+    a.config_path = std::string(SIMP_SOURCE_DIR) + "/config_ini/mapping.ini";
+    simp::mapping::MapApp app;
+    app.log = &log;
+    app.initialize(a);
+    app.run();
+
+    simp::eval::MapMatchParams p;
+    // the paper's Table I classes (the authors' mapper disables door, box, chair, person)
+    p.classes = {"board", "cabinet", "desk", "drawers", "fire extinguisher", "oven", "potted plant", "sink", "sofa",
+                 "table"};
+    const auto gt = simp::world::loadWorld(W).objects;
+    const auto built = simp::world::loadWorld(M).objects;
+    const simp::eval::MapMetrics m = simp::eval::evaluateMap(gt, built, p);
+    std::cout << "map quality: IoU " << m.iou << ", precision " << m.precision << ", recall " << m.recall << "\n";
+    // The paper's known-poses map (Table I, KP): IoU 0.67, Pr 0.96, Rc 0.94. The method does NOT
+    // reach that on the simulator with the authors' detection noise (doc/results.md explains why:
+    // the authors' class_noise.csv spreads, e.g. desk 1.0 m, with tau_cost = 0.3 leave duplicates).
+    // What it reaches here (2026-11-22, this world and seed): IoU 0.53, Pr 0.20, Rc 0.84 (over the
+    // classes present). Asserted with a margin of ~0.1 below those measured values, so that a
+    // regression is caught.
+    EXPECT_GT(m.iou, 0.45);
+    EXPECT_GT(m.recall, 0.70);
+    EXPECT_GT(m.precision, 0.12);
+}
