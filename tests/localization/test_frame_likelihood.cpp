@@ -139,3 +139,65 @@ TEST(ObjectMcl, PrunesParticlesThatLeaveTheFreeSpace) {
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     EXPECT_EQ(mcl.lastPrunedCount(), 0u);
 }
+
+TEST(FrameLikelihood, PerFrameMultipliesTheGeometricMeansOfEachTimestamp) {
+    const auto w = test::makeWorld();
+    const auto map = makeMap(w);
+    const mrpt::math::TPose2D robot{3.0, 2.0, 0.4};
+    const auto a = makeFrame(w, robot);                 // 5 detections at time t0
+ const auto b = makeFrame(w, {3.05, 2.0, 0.42});         // 5 detections, another time
+    const mrpt::Clock::time_point t0 = mrpt::Clock::fromDouble(100.0), t1 = mrpt::Clock::fromDouble(100.5);
+    mrpt::obs::CSensoryFrame both, only_a;
+    for (const auto& o : a) { o->timestamp = t0; both.insert(o); only_a.insert(o); }
+    mrpt::obs::CSensoryFrame only_b;
+    for (const auto& o : b) {
+        o->timestamp = t1;
+        both.insert(o);
+        only_b.insert(o);
+    }
+    const std::vector<mrpt::math::TPose2D> poses{robot, {3.3, 2.1, 0.5}, {8.0, 6.0, -2.0}};
+    std::vector<double> la(3), lb(3), per_frame(3), pooled(3);
+    ASSERT_EQ(frameLogLikelihoods(*map, only_a, poses.data(), 3, la.data()), 5u);
+    ASSERT_EQ(frameLogLikelihoods(*map, only_b, poses.data(), 3, lb.data()), 5u);
+    EXPECT_EQ(perFrameLogLikelihoods(*map, both, poses.data(), 3, per_frame.data()), 10u);
+    EXPECT_EQ(frameLogLikelihoods(*map, both, poses.data(), 3, pooled.data()), 10u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        // Eq. singw per frame, product over the two frames ...
+        EXPECT_NEAR(per_frame[i], la[i] + lb[i], 1e-9) << i;
+        // ... where pooling all 10 detections in one mean gives their average (half the evidence).
+        EXPECT_NEAR(pooled[i], 0.5 * (la[i] + lb[i]), 1e-9) << i;
+    }
+    // One timestamp: per-frame and pooled agree.
+    std::vector<double> single(3);
+    EXPECT_EQ(perFrameLogLikelihoods(*map, only_a, poses.data(), 3, single.data()), 5u);
+    for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(single[i], la[i], 1e-12);
+}
+
+TEST(ObjectMcl, RecoveryInjectsRandomParticlesWhenTheLikelihoodDrops) {
+    const auto w = test::makeWorld();
+    const auto map = makeMap(w);
+    mrpt::random::getRandomGenerator().randomize(7);
+    ObjectMcl mcl(map);
+    auto free_space = std::make_shared<FreeSpace>(w.floorplan, 0.7);
+    mcl.setFreeSpace(free_space);
+    mcl.recovery_alpha_slow = 0.05;
+    mcl.recovery_alpha_fast = 0.5;
+    const mrpt::math::TPose2D robot{3.0, 2.0, 0.4};
+    mcl.resetDeterministic(mrpt::math::TPose2D(robot), 400);  // all particles at the true pose
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
+    const auto good = makeFrame(w, robot);
+    for (int k = 0; k < 10; ++k) mcl.prediction_and_update_pfStandardProposal(nullptr, &good, pf);
+    EXPECT_EQ(mcl.lastInjectedCount(), 0u);  // the likelihood stays as high as it was: w_fast = w_slow
+    // The same detections seen from far away: w_avg drops, w_fast falls below w_slow.
+    const auto bad = makeFrame(w, {8.0, 6.0, -2.0});
+    mcl.prediction_and_update_pfStandardProposal(nullptr, &bad, pf);
+    mcl.prediction_and_update_pfStandardProposal(nullptr, &bad, pf);
+    EXPECT_GT(mcl.lastInjectedCount(), 0u);
+    EXPECT_LT(mcl.lastInjectedCount(), 400u);
+    std::size_t moved = 0;
+    for (const auto& p : mcl.m_particles) {
+        EXPECT_TRUE(std::isfinite(p.log_w));
+        if (std::hypot(p.d.x - robot.x, p.d.y - robot.y) > 1e-9) ++moved;
+    }
+    EXPECT_GE(moved, mcl.lastInjectedCount());
+}

@@ -11,6 +11,8 @@ TEST(LocalizeOptions, DefaultsAreThePapers) {
     EXPECT_EQ(e.particles_count, 5000u);
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.10);
     EXPECT_DOUBLE_EQ(e.update_min_d_phi, 0.03);
+    EXPECT_TRUE(e.singw_per_frame);
+    EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.0);  // recovery is not the paper's: off
     const auto m = MotionModelOptions::paperDefaults();
     EXPECT_EQ(m.modelSelection, mrpt::obs::CActionRobotMovement2D::mmGaussian);
     EXPECT_DOUBLE_EQ(m.gaussianModel.a1, 0.15);
@@ -36,6 +38,7 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     mrpt::config::CConfigFileMemory cfg(
         "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
         "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
+        "singw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
         "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n");
     validateIniKeys(cfg, "x.ini");
     ExperimentOptions e;
@@ -47,6 +50,9 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     EXPECT_FALSE(e.prune_outside_free_space);
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.2);
     EXPECT_EQ(e.estimate_mode, EstimateMode::Mean);
+    EXPECT_FALSE(e.singw_per_frame);
+    EXPECT_DOUBLE_EQ(e.recovery_alpha_slow, 0.001);
+    EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.1);
     MotionModelOptions m;
     m.loadFromConfigFile(cfg, "MotionModel");
     EXPECT_EQ(m.mrpt_options.modelSelection, mrpt::obs::CActionRobotMovement2D::mmThrun);
@@ -80,6 +86,10 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     EXPECT_NE(message("[LocalizationExperiment]\nestimate_mode=median\n").find("estimate_mode"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nupdate_min_d_xy=nan\n").find("update_min_d_xy"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nprune_outside_free_space=maybe\n").find("prune"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nrecovery_alpha_slow=0.2\nrecovery_alpha_fast=0.1\n").find("recovery_alpha_slow"),
+              std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nrecovery_alpha_fast=1.5\n").find("recovery_alpha"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nsingw_per_frame=sometimes\n").find("singw_per_frame"), std::string::npos);
     EXPECT_NE(message("[MotionModel]\nmodelSelection=magic\n").find("modelSelection"), std::string::npos);
     EXPECT_EQ(message("[LocalizationExperiment]\nparticles_count=10\n"), "");
 }

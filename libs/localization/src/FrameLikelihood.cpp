@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace simp::localization {
 
@@ -28,6 +29,27 @@ std::size_t frameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CS
                                      std::to_string(poses[i].phi) + ")");
     }
     return K;
+}
+
+std::size_t perFrameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
+                                   const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+    std::vector<mrpt::Clock::time_point> stamps;
+    for (const auto& o : sf)
+        if (std::find(stamps.begin(), stamps.end(), o->timestamp) == stamps.end()) stamps.push_back(o->timestamp);
+    if (stamps.size() <= 1) return frameLogLikelihoods(map, sf, poses, n, out_log);
+    std::fill(out_log, out_log + n, 0.0);
+    std::vector<double> group(n);
+    std::size_t K_total = 0;
+    for (const auto& t : stamps) {
+        mrpt::obs::CSensoryFrame g;
+        for (const auto& o : sf)
+            if (o->timestamp == t) g.insert(o);
+        const std::size_t K = frameLogLikelihoods(map, g, poses, n, group.data());
+        if (K == 0) continue;
+        K_total += K;
+        for (std::size_t i = 0; i < n; ++i) out_log[i] += group[i];  // product over frames
+    }
+    return K_total;
 }
 
 }  // namespace simp::localization

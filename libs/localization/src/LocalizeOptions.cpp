@@ -82,6 +82,14 @@ void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     update_min_d_xy = readPositive(cfg, s, "update_min_d_xy", update_min_d_xy, true);
     update_min_d_phi = readPositive(cfg, s, "update_min_d_phi", update_min_d_phi, true);
     keep_skipped_detections = readBool(cfg, s, "keep_skipped_detections", keep_skipped_detections);
+    singw_per_frame = readBool(cfg, s, "singw_per_frame", singw_per_frame);
+    recovery_alpha_slow = readPositive(cfg, s, "recovery_alpha_slow", recovery_alpha_slow, true);
+    recovery_alpha_fast = readPositive(cfg, s, "recovery_alpha_fast", recovery_alpha_fast, true);
+    if (recovery_alpha_slow > 1.0 || recovery_alpha_fast > 1.0)
+        throw std::invalid_argument(where(s, "recovery_alpha_slow") + " and recovery_alpha_fast must be in [0, 1]");
+    if (recovery_alpha_fast > 0.0 && !(recovery_alpha_slow < recovery_alpha_fast))
+        throw std::invalid_argument(where(s, "recovery_alpha_slow") + " = " + std::to_string(recovery_alpha_slow) +
+                                    " must be smaller than recovery_alpha_fast = " + std::to_string(recovery_alpha_fast));
     const std::string mode = cfg.read_string(s, "estimate_mode", estimate_mode == EstimateMode::Cluster ? "cluster" : "mean");
     if (mode == "cluster")
         estimate_mode = EstimateMode::Cluster;
@@ -110,6 +118,9 @@ void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
         << "update_min_d_xy (m)      = " << update_min_d_xy << "\n"
         << "update_min_d_phi (rad)   = " << update_min_d_phi << "\n"
         << "keep_skipped_detections  = " << (keep_skipped_detections ? "true" : "false") << "\n"
+        << "singw_per_frame          = " << (singw_per_frame ? "true" : "false") << "\n"
+        << "recovery_alpha_slow      = " << recovery_alpha_slow << "\n"
+        << "recovery_alpha_fast      = " << recovery_alpha_fast << "\n"
         << "estimate_mode            = " << (estimate_mode == EstimateMode::Cluster ? "cluster" : "mean") << "\n"
         << "cluster_radius_m         = " << cluster_radius_m << "\n"
         << "cluster_max_dphi (rad)   = " << cluster_max_dphi << "\n"
@@ -183,7 +194,7 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
     checkKnownKeys(cfg, kExperiment,
                    {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
-                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
+                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
                     "cluster_cell_m", "cluster_phi_bins", "write_particles", "write_png"},
                    file);
     checkKnownKeys(cfg, kMotion,

@@ -20,4 +20,14 @@ namespace simp::localization {
 std::size_t frameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
                                 const mrpt::math::TPose2D* poses, std::size_t n, double* out_log);
 
+/** Eq. singw per camera frame, multiplied over the frames of `sf`: the observations are grouped
+ * by timestamp (one group = the detections of all cameras at one time, e.g. a frame skipped by
+ * the motion trigger and kept for this update, see SkippedDetections) and
+ * log p = sum_groups (1/K_g) sum_{k in g} log p(z^k | m, x_i). With one timestamp this equals
+ * frameLogLikelihoods(). Groups with K_g = 0 contribute nothing.
+ * eturn the total K. 	hrow std::runtime_error when a log-likelihood is not finite.
+ */
+std::size_t perFrameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
+                                   const mrpt::math::TPose2D* poses, std::size_t n, double* out_log);
+
 }  // namespace simp::localization

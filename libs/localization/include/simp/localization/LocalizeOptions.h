@@ -29,6 +29,9 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
     bool keep_skipped_detections = true;  ///< use the detections of skipped frames at the next update
+    bool singw_per_frame = true;          ///< Eq. singw per camera frame, product over the update's frames
+    double recovery_alpha_slow = 0.0;     ///< augmented-MCL long-term average rate (0 = no recovery)
+    double recovery_alpha_fast = 0.0;     ///< augmented-MCL short-term average rate (0 = no recovery)
     EstimateMode estimate_mode = EstimateMode::Cluster;
     double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
     double cluster_max_dphi = 0.7853981633974483;  ///< cluster: and within this heading difference (rad)

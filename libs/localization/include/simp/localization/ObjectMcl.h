@@ -33,11 +33,25 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     void setFreeSpace(std::shared_ptr<const FreeSpace> free_space) { m_free_space = std::move(free_space); }
     bool prune_outside_free_space = true;
 
+    /// Recovery by random particles (augmented MCL, Thrun et al., "Probabilistic Robotics", Table 8.3;
+    /// not in the paper; 0 = off). After each update with K > 0 detections, w_avg = the weighted mean
+    /// over the particles of the frame likelihood (Eq. singw) is smoothed into w_slow (rate alpha_slow)
+    /// and w_fast (rate alpha_fast); at the next step each particle is replaced, with probability
+    /// max(0, 1 - w_fast / w_slow), by a pose drawn uniformly over the free space, with the mean weight.
+    /// Requires alpha_slow < alpha_fast, both in [0, 1], and a free space (setFreeSpace).
+    /// true: Eq. singw per camera frame (timestamp), multiplied over the frames of the update
+    /// (perFrameLogLikelihoods); false: one geometric mean over all detections of the update.
+    bool singw_per_frame = true;
+    double recovery_alpha_slow = 0.0;
+    double recovery_alpha_fast = 0.0;
+
     const maps::CObjectMap& objectMap() const { return *m_map; }
     /// Detections K used by the last update (0: no update or no usable detection).
     std::size_t lastDetectionCount() const { return m_last_K; }
     /// Particles redrawn by the last prediction.
     std::size_t lastPrunedCount() const { return m_last_pruned; }
+    /// Particles replaced by random ones at the last step (recovery).
+    std::size_t lastInjectedCount() const { return m_last_injected; }
 
     /// @name mrpt::slam::CMonteCarloLocalization2D overrides
     /// @{
@@ -53,12 +67,15 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
 
    private:
     void pruneOutsideFreeSpace();
+    void injectRandomParticles();
+    void updateRecoveryAverages(const double* log_lik, std::size_t n);
 
     std::shared_ptr<const maps::CObjectMap> m_map;
     std::shared_ptr<const FreeSpace> m_free_space;
     std::vector<mrpt::math::TPose2D> m_poses;  ///< scratch: particle poses of the batch
     std::vector<double> m_log_lik;             ///< scratch: their log-likelihoods
-    std::size_t m_last_K = 0, m_last_pruned = 0;
+    std::size_t m_last_K = 0, m_last_pruned = 0, m_last_injected = 0;
+    double m_w_slow = -1.0, m_w_fast = -1.0;  ///< recovery averages; < 0 = not started
 };
 
 }  // namespace simp::localization
