@@ -107,3 +107,37 @@ TEST(Visibility, ObjectsBehindTheCameraOrOutOfRangeAreNotActive) {
     EXPECT_FALSE(active[1]);   // 4.5 m > 4 m range
     EXPECT_TRUE(candidate[1]);
 }
+
+TEST(Visibility, IntersectingBoxesDoNotHideEachOtherWhenGrouped) {
+    // A duplicate 0.3 m behind its twin: hidden while intersecting boxes occlude (the default);
+    // with intersecting_boxes_occlude = false both are active, a separate box behind still is not.
+    const auto twin = makeUprightBox({3.0, 0.0, 0.5}, {1.0, 1.0, 1.0}, 0.0);
+    const auto dup = makeUprightBox({3.3, 0.0, 0.5}, {1.0, 1.0, 1.0}, 0.0);
+    const auto behind = makeUprightBox({5.0, 0.0, 0.4}, {0.5, 0.5, 0.8}, 0.0);
+    auto opts = test::testOptions();
+    std::vector<bool> active, candidate;
+    {
+        ObjectMapBuilder b(opts);
+        b.setMap(mapOf({twin, dup, behind}));
+        b.visibility(cameraAt(0, 0, 0), 0, active, candidate);
+        EXPECT_TRUE(active[0]);
+        EXPECT_FALSE(active[1]);
+        EXPECT_FALSE(active[2]);
+    }
+    opts.intersecting_boxes_occlude = false;
+    ObjectMapBuilder b(opts);
+    b.setMap(mapOf({twin, dup, behind}));
+    b.visibility(cameraAt(0, 0, 0), 0, active, candidate);
+    EXPECT_TRUE(active[0]);
+    EXPECT_TRUE(active[1]);
+    EXPECT_FALSE(active[2]);
+    // the renderer with groups: visible pixels of the grouped pair are all their covered pixels
+    VisibilityRenderer r;
+    std::vector<BoxView> views;
+    RenderParams p;
+    const std::vector<int> group{0, 0, 2};
+    p.group = &group;
+    r.render(cameraAt(0, 0, 0), {twin, dup, behind}, nullptr, p, views);
+    EXPECT_EQ(views[1].visible_px, views[1].covered_px);
+    EXPECT_NEAR(views[2].occludedFraction(), 1.0, 1e-12);
+}

@@ -114,6 +114,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
     readBool(c, s, "merge_duplicates", merge_duplicates);
+    readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
     readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
     readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
     readDouble(c, s, "truncation_threshold", truncation_threshold);
@@ -193,6 +194,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
+    o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
     o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
     o << "truncation_threshold  = " << truncation_threshold << "\n";

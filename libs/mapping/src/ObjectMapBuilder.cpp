@@ -55,6 +55,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_window_active.clear();
     m_window_candidates.clear();
     m_window_start.reset();
+    m_groups_valid = false;
 }
 
 int ObjectMapBuilder::roomOf(double x_m, double y_m) const {

@@ -1,5 +1,6 @@
 // ObjectMapBuilder: integration of the local map m^_g into the global map m_g, and the
 // visibility (I_active) of the map objects in one camera.
+#include <simp/geometry/Box3DIoU.h>
 #include <simp/geometry/Hungarian.h>
 #include <simp/mapping/AssociationCost.h>
 #include <simp/mapping/ObjectMapBuilder.h>
@@ -14,6 +15,30 @@ namespace {
 constexpr double kForbiddenCost = 2.0;  ///< different classes: never associated
 }  // namespace
 
+void ObjectMapBuilder::updateGroups() {
+    // Union-find over intersecting boxes (3D IoU > 0). Distinct objects cannot interpenetrate:
+    // intersecting map boxes are estimates of one object (duplicates) or nested objects, and a
+    // duplicate hidden behind its twin would never become active, never be skipped, never purged.
+    const std::size_t n = m_g.objects.size();
+    std::vector<int> parent(n);
+    for (std::size_t k = 0; k < n; ++k) parent[k] = static_cast<int>(k);
+    const auto find = [&](int k) {
+        while (parent[static_cast<std::size_t>(k)] != k) k = parent[static_cast<std::size_t>(k)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(k)])];
+        return k;
+    };
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 1; j < n; ++j) {
+            const auto& a = m_g.objects[i].box;
+            const auto& b = m_g.objects[j].box;
+            if ((a.center - b.center).norm() > 0.5 * (a.size.norm() + b.size.norm())) continue;
+            if (geometry::iou3D(a, b) <= 0) continue;
+            parent[static_cast<std::size_t>(find(static_cast<int>(i)))] = find(static_cast<int>(j));
+        }
+    m_groups.resize(n);
+    for (std::size_t k = 0; k < n; ++k) m_groups[k] = find(static_cast<int>(k));
+    m_groups_valid = true;
+}
+
 void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
                                   std::vector<bool>& candidate) {
     const std::size_t n = m_g.objects.size();
@@ -27,6 +52,10 @@ void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room,
     prm.near_plane_m = m_options.near_plane_m;
     prm.wall_depth_margin_m = m_options.wall_depth_margin_m;
     prm.max_distance_m = m_options.wall_cast_max_m;
+    if (!m_options.intersecting_boxes_occlude) {
+        if (!m_groups_valid || m_groups.size() != n) updateGroups();
+        prm.group = &m_groups;
+    }
     m_renderer.render(camera, m_boxes_scratch, &m_walls, prm, m_views_scratch);
     for (std::size_t k = 0; k < n; ++k) {
         const world::MapObject& o = m_g.objects[k];
@@ -188,6 +217,7 @@ void ObjectMapBuilder::flush() {
     m_local.clear();
     m_window_active.clear();
     m_window_candidates.clear();
+    m_groups_valid = false;
 }
 
 }  // namespace simp::mapping

@@ -55,6 +55,15 @@ void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int o
                 if (!(inv_z > 0)) continue;
                 const float z = static_cast<float>(1.0 / inv_z);
                 const int idx = y * m_w + x;
+                if (m_pass == 1) {  // visibility against the final z-buffer, own group transparent
+                    if (m_stamp_visible[idx] == object) continue;
+                    m_stamp_visible[idx] = object;
+                    const int front = m_id[idx];
+                    const int g = (*m_group)[static_cast<std::size_t>(object)];
+                    if (front == object || (front >= 0 && g >= 0 && (*m_group)[static_cast<std::size_t>(front)] == g))
+                        ++(*m_out)[object].visible_px;
+                    continue;
+                }
                 if (m_stamp[idx] != object) {
                     m_stamp[idx] = object;
                     ++(*m_out)[object].covered_px;
@@ -113,6 +122,10 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
 
     std::array<Eigen::Vector3d, 8> c_cam;
     std::array<Eigen::Vector3d, 8> face_in, face_clip, face_px;
+    m_group = prm.group != nullptr && prm.group->size() == boxes.size() ? prm.group : nullptr;
+    if (m_group != nullptr) m_stamp_visible.assign(npx, -1);
+    const int n_pass = m_group != nullptr ? 2 : 1;
+    for (m_pass = 0; m_pass < n_pass; ++m_pass)
     for (std::size_t k = 0; k < boxes.size(); ++k) {
         const geometry::Box3D& box = boxes[k];
         BoxView& view = out[k];
@@ -145,8 +158,10 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
         const double ih = std::max(0.0, std::min(v_max, double(cam.height_px)) - std::max(v_min, 0.0));
         view.truncated_fraction = area > 0 ? std::clamp(1.0 - iw * ih / area, 0.0, 1.0) : 1.0;
     }
-    for (std::size_t i = 0; i < npx; ++i)
-        if (m_id[i] >= 0) ++out[m_id[i]].visible_px;
+    if (m_group == nullptr)
+        for (std::size_t i = 0; i < npx; ++i)
+            if (m_id[i] >= 0) ++out[m_id[i]].visible_px;
+    m_pass = 0;
     m_out = nullptr;
 }
 

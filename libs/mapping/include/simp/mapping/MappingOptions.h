@@ -42,6 +42,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.
     bool merge_duplicates = true;
+    /// I_active: do intersecting map boxes occlude each other? false: boxes that intersect in 3D
+    /// are treated as one group that does not hide itself (duplicates become active, get n_skip
+    /// and are purged). Project option; measured in doc/results.md.
+    bool intersecting_boxes_occlude = true;
     /// Use the class noise mean mu in C_cen. Default false: both objects of the cost are
     /// predictions, so the detector's bias cancels (and mu's direction depends on which of the 4
     /// equivalent box frames an object has).

@@ -111,6 +111,11 @@ class ObjectMapBuilder {
     VisibilityRenderer m_renderer;
     std::vector<geometry::Box3D> m_boxes_scratch;
     std::vector<BoxView> m_views_scratch;
+    /// Per map object: id of its group of mutually intersecting boxes (they do not occlude each
+    /// other in I_active); recomputed after the map changed.
+    std::vector<int> m_groups;
+    bool m_groups_valid = false;
+    void updateGroups();
     BuilderStats m_stats;
 };
 

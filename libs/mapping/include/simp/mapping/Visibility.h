@@ -37,6 +37,11 @@ struct RenderParams {
     double near_plane_m = 0.05;       ///< m
     double wall_depth_margin_m = 0.3; ///< m; box surfaces up to this far behind a wall still count visible
     double max_distance_m = 12.0;     ///< boxes and walls farther than this are ignored (m)
+    /// Optional, one entry per box: boxes with the same group id >= 0 do not occlude each other
+    /// (BoxView::visible_px counts a pixel where a box of its own group is front-most). Used for
+    /// boxes that intersect: distinct objects cannot interpenetrate, so they are estimates of one
+    /// object (or nested objects) and must not hide each other. Costs a second rasterization.
+    const std::vector<int>* group = nullptr;
 };
 
 /// Renders boxes into a reduced-resolution z-buffer. Reuses its buffers across calls
@@ -50,6 +55,9 @@ class VisibilityRenderer {
 
    private:
     void rasterizePolygon(const Eigen::Vector3d* pts_px_invz, int n, int object);
+    int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility with groups
+    const std::vector<int>* m_group = nullptr;
+    std::vector<int> m_stamp_visible;   ///< last box counted visible at a pixel (pass 1)
 
     int m_w = 0, m_h = 0;
     std::vector<float> m_depth;   ///< nearest depth per pixel (camera z, m)
