@@ -115,6 +115,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readInt(c, s, "min_local_detections", min_local_detections);
     readBool(c, s, "merge_duplicates", merge_duplicates);
     readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
+    readDouble(c, s, "cost_covariance_scale", cost_covariance_scale);
     readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
     readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
     readDouble(c, s, "truncation_threshold", truncation_threshold);
@@ -163,6 +164,7 @@ void MappingOptions::validate() const {
     requireRange(tau_purge, 0.0, 1e6, "tau_purge");
     requireRange(min_local_detections, 1, 1e6, "min_local_detections");
     requireRange(default_noise_sigma_m, 1e-6, 1e3, "default_noise_sigma_m");
+    requireRange(cost_covariance_scale, 1e-6, 1e6, "cost_covariance_scale");
     requireRange(truncation_threshold, 0.0, 1.0, "truncation_threshold");
     requireRange(max_occluded_fraction, 0.0, 1.0, "max_occluded_fraction");
     requireRange(zbuffer_downscale, 1, 64, "zbuffer_downscale");
@@ -194,6 +196,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
+ o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
     o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
     o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";

@@ -100,6 +100,7 @@ world::NoiseModel ObjectMapBuilder::costNoise(const std::optional<world::NoiseMo
     // Both objects of the cost are predictions (a map / local object is a mean of detections):
     // the detector's bias mu cancels in their difference.
     if (!m_options.cost_uses_noise_mean) n.mean_m.setZero();
+    n.cov_m2 *= m_options.cost_covariance_scale;  // both objects are estimates (MappingOptions.h)
     return n;
 }
 

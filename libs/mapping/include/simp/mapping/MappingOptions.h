@@ -46,6 +46,12 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// are treated as one group that does not hide itself (duplicates become active, get n_skip
     /// and are purged). Project option; measured in doc/results.md.
     bool intersecting_boxes_occlude = true;
+    /// C_cen (Eq. costfunc) uses the class covariance times this factor (unitless, > 0). The paper's
+    /// p_o1(c_o2 | l) treats o1 as exact; in the builder both o1 (a map / local object) and o2 are
+    /// estimates with the class noise, and with per-viewpoint persistent errors a mean of many
+    /// detections does not shrink to the truth, so their difference has covariance up to 2 Sigma.
+    /// Default 1 (the paper); 2 and 4 measured in doc/results.md (little effect: C_IoU dominates).
+    double cost_covariance_scale = 1.0;
     /// Use the class noise mean mu in C_cen. Default false: both objects of the cost are
     /// predictions, so the detector's bias cancels (and mu's direction depends on which of the 4
     /// equivalent box frames an object has).
