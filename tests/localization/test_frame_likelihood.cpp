@@ -135,6 +135,15 @@ TEST(ObjectMcl, PrunesParticlesThatLeaveTheFreeSpace) {
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     EXPECT_EQ(mcl.lastPrunedCount(), 500u);
     for (const auto& p : mcl.m_particles) EXPECT_TRUE(free_space->isFree(p.d.x, p.d.y));
+    // Kept weights (the authors' code) ...
+    for (std::size_t i = 0; i < mcl.size(); ++i) mcl.m_particles[i].log_w = -0.001 * static_cast<double>(i);
+    mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
+    for (std::size_t i = 0; i < mcl.size(); ++i) EXPECT_EQ(mcl.m_particles[i].log_w, -0.001 * static_cast<double>(i));
+    // ... or the smallest weight MRPT keeps; with every particle pruned they all get the same one.
+    mcl.prune_keeps_weight = false;
+    mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
+    EXPECT_EQ(mcl.lastPrunedCount(), 500u);
+    for (const auto& p : mcl.m_particles) EXPECT_DOUBLE_EQ(p.log_w, -pf.max_loglikelihood_dyn_range);
     mcl.prune_outside_free_space = false;
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     EXPECT_EQ(mcl.lastPrunedCount(), 0u);

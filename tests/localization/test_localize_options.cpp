@@ -12,6 +12,7 @@ TEST(LocalizeOptions, DefaultsAreThePapers) {
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.10);
     EXPECT_DOUBLE_EQ(e.update_min_d_phi, 0.03);
     EXPECT_TRUE(e.singw_per_frame);
+    EXPECT_TRUE(e.prune_keeps_weight);
     EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.0);  // recovery is not the paper's: off
     const auto m = MotionModelOptions::paperDefaults();
     EXPECT_EQ(m.modelSelection, mrpt::obs::CActionRobotMovement2D::mmGaussian);
@@ -38,7 +39,7 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     mrpt::config::CConfigFileMemory cfg(
         "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
         "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
-        "singw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
+        "prune_keeps_weight=false\nsingw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
         "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n");
     validateIniKeys(cfg, "x.ini");
     ExperimentOptions e;
@@ -51,6 +52,7 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.2);
     EXPECT_EQ(e.estimate_mode, EstimateMode::Mean);
     EXPECT_FALSE(e.singw_per_frame);
+    EXPECT_FALSE(e.prune_keeps_weight);
     EXPECT_DOUBLE_EQ(e.recovery_alpha_slow, 0.001);
     EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.1);
     MotionModelOptions m;

@@ -212,6 +212,7 @@ void LocalizeApp::run() {
     ObjectMcl mcl(map);
     mcl.options.KLD_params.loadFromConfigFile(params, "KLD_options");
     mcl.prune_outside_free_space = experiment.prune_outside_free_space;
+    mcl.prune_keeps_weight = experiment.prune_keeps_weight;
     mcl.singw_per_frame = experiment.singw_per_frame;
     mcl.recovery_alpha_slow = experiment.recovery_alpha_slow;
     mcl.recovery_alpha_fast = experiment.recovery_alpha_fast;

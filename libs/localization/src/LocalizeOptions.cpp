@@ -82,6 +82,7 @@ void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     update_min_d_xy = readPositive(cfg, s, "update_min_d_xy", update_min_d_xy, true);
     update_min_d_phi = readPositive(cfg, s, "update_min_d_phi", update_min_d_phi, true);
     keep_skipped_detections = readBool(cfg, s, "keep_skipped_detections", keep_skipped_detections);
+    prune_keeps_weight = readBool(cfg, s, "prune_keeps_weight", prune_keeps_weight);
     singw_per_frame = readBool(cfg, s, "singw_per_frame", singw_per_frame);
     recovery_alpha_slow = readPositive(cfg, s, "recovery_alpha_slow", recovery_alpha_slow, true);
     recovery_alpha_fast = readPositive(cfg, s, "recovery_alpha_fast", recovery_alpha_fast, true);
@@ -118,6 +119,7 @@ void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
         << "update_min_d_xy (m)      = " << update_min_d_xy << "\n"
         << "update_min_d_phi (rad)   = " << update_min_d_phi << "\n"
         << "keep_skipped_detections  = " << (keep_skipped_detections ? "true" : "false") << "\n"
+        << "prune_keeps_weight       = " << (prune_keeps_weight ? "true" : "false") << "\n"
         << "singw_per_frame          = " << (singw_per_frame ? "true" : "false") << "\n"
         << "recovery_alpha_slow      = " << recovery_alpha_slow << "\n"
         << "recovery_alpha_fast      = " << recovery_alpha_fast << "\n"
@@ -194,7 +196,7 @@ void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string&
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
     checkKnownKeys(cfg, kExperiment,
                    {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
-                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
+                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "prune_keeps_weight", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
                     "cluster_cell_m", "cluster_phi_bins", "write_particles", "write_png"},
                    file);
     checkKnownKeys(cfg, kMotion,

@@ -24,7 +24,7 @@ void ObjectMcl::prediction_and_update_pfStandardProposal(
     // 1) Prediction only: MRPT draws from the action's motion model (and does KLD sampling).
     mrpt::slam::CMonteCarloLocalization2D::prediction_and_update_pfStandardProposal(actions, nullptr, PF_options);
     m_last_pruned = 0;
-    if (prune_outside_free_space && m_free_space) pruneOutsideFreeSpace();
+    if (prune_outside_free_space && m_free_space) pruneOutsideFreeSpace(PF_options.max_loglikelihood_dyn_range);
     m_last_injected = 0;
     if (recovery_alpha_fast > 0.0 && m_free_space) injectRandomParticles();
 
@@ -54,10 +54,19 @@ double ObjectMcl::PF_SLAM_computeObservationLikelihoodForParticle(
     return log_lik;
 }
 
-void ObjectMcl::pruneOutsideFreeSpace() {
+void ObjectMcl::pruneOutsideFreeSpace(double dyn_range) {
+    double floor_lw = 0.0;
+    if (!prune_keeps_weight) {
+        double max_lw = -std::numeric_limits<double>::infinity();
+        for (const auto& p : m_particles)
+            if (m_free_space->isFree(p.d.x, p.d.y)) max_lw = std::max(max_lw, p.log_w);
+        if (!std::isfinite(max_lw)) max_lw = 0.0;  // every particle left: all get the same weight
+        floor_lw = max_lw - dyn_range;
+    }
     for (auto& p : m_particles) {
         if (m_free_space->isFree(p.d.x, p.d.y)) continue;
-        p.d = m_free_space->drawUniform();  // keeps p.log_w
+        p.d = m_free_space->drawUniform();
+        if (!prune_keeps_weight) p.log_w = floor_lw;
         ++m_last_pruned;
     }
 }

@@ -29,6 +29,7 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
     bool keep_skipped_detections = true;  ///< use the detections of skipped frames at the next update
+    bool prune_keeps_weight = true;       ///< pruned particles keep their weight (false: smallest weight)
     bool singw_per_frame = true;          ///< Eq. singw per camera frame, product over the update's frames
     double recovery_alpha_slow = 0.0;     ///< augmented-MCL long-term average rate (0 = no recovery)
     double recovery_alpha_fast = 0.0;     ///< augmented-MCL short-term average rate (0 = no recovery)

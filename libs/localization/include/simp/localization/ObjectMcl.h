@@ -32,6 +32,9 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// The free space used for pruning (nullptr, the default, or prune_outside_free_space = false: no pruning).
     void setFreeSpace(std::shared_ptr<const FreeSpace> free_space) { m_free_space = std::move(free_space); }
     bool prune_outside_free_space = true;
+    /// true: a pruned particle keeps its weight (authors' code); false: it gets the smallest weight
+    /// MRPT keeps (max log-weight - PF_options.max_loglikelihood_dyn_range), i.e. p(x off free space) ~ 0.
+    bool prune_keeps_weight = true;
 
     /// Recovery by random particles (augmented MCL, Thrun et al., "Probabilistic Robotics", Table 8.3;
     /// not in the paper; 0 = off). After each update with K > 0 detections, w_avg = the weighted mean
@@ -66,7 +69,7 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// @}
 
    private:
-    void pruneOutsideFreeSpace();
+    void pruneOutsideFreeSpace(double dyn_range);
     void injectRandomParticles();
     void updateRecoveryAverages(const double* log_lik, std::size_t n);
 
