@@ -9,6 +9,11 @@
 
 namespace simp::maps {
 
+double noiseFrameYaw(const geometry::Box3D& box_world) {
+    const double yaw = geometry::yawOf(box_world);
+    return box_world.size.x() > box_world.size.y() ? yaw + M_PI / 2 : yaw;
+}
+
 ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise) {
     if (!noise.mean_m.allFinite() || !noise.cov_m2.allFinite() || !std::isfinite(noise.exponent_b) ||
         noise.exponent_b <= 0.0)
@@ -17,8 +22,8 @@ ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, cons
     if (sym.determinant() <= 0.0 || sym(0, 0) <= 0.0)
         throw std::invalid_argument("noise model: covariance is not positive definite");
 
-    // Eq. shiftdist: R_o = rotation by the object's yaw, c_o = box centre on the ground.
-    const double yaw = geometry::yawOf(box_world);
+    // Eq. shiftdist: R_o = rotation into the object's noise frame, c_o = box centre on the ground.
+    const double yaw = noiseFrameYaw(box_world);
     Eigen::Matrix2d R_o;
     R_o << std::cos(yaw), -std::sin(yaw), std::sin(yaw), std::cos(yaw);
     const Eigen::Matrix2d cov_world = R_o * sym * R_o.transpose();

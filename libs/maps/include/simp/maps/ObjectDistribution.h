@@ -14,7 +14,9 @@ namespace simp::maps {
 ///
 /// Eq. shiftdist: the class (or per-object) noise model, given in the object frame on the
 /// ground, is moved to the object: mu_o = R_o mu + c_o, Sigma_o = R_o Sigma R_o^T, with
-/// c_o the box centre on the ground (world, m) and R_o the 2D rotation by the box yaw.
+/// c_o the box centre on the ground (world, m) and R_o the 2D rotation into the object's noise
+/// frame (noiseFrameYaw: y along the longer horizontal side, the authors' convention, as the
+/// simulator and the mapper use it).
 ///
 /// Unnormalized on purpose: the peak is exactly 1, so p_o is in [0, 1] and can be used as
 /// the association probability of Eq. combined (p_o p_g + (1 - p_o) eta). The normalized
@@ -41,6 +43,12 @@ struct ObjectDistribution {
     /// p_o at the world point (x, y) (m), in [0, 1].
     double probability(double x_m, double y_m) const { return std::exp(-0.5 * powerB(mahalanobis2(x_m, y_m))); }
 };
+
+/// Yaw (rad, world) of the noise frame of Eq. shiftdist: the noise model's y axis is the box's
+/// longer horizontal side, x the shorter (box yaw + pi/2 when size.x > size.y, else the box yaw).
+/// The authors' global_variance.csv has every board's large scale along its length whichever way
+/// it faces; simp::sim::noiseFrameYaw and simp::mapping::noiseFrameYaw are the same rule.
+double noiseFrameYaw(const geometry::Box3D& box_world);
 
 /// Eq. shiftdist for a map object's box (world frame, canonical upright) and its noise model.
 /// Throws std::invalid_argument when the noise model is not valid (Sigma not SPD, b <= 0).
