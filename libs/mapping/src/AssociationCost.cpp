@@ -1,16 +1,14 @@
 #include <simp/geometry/Box3DIoU.h>
 #include <simp/geometry/RotationAverage.h>
 #include <simp/mapping/AssociationCost.h>
+#include <simp/world/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace simp::mapping {
 
-double noiseFrameYaw(const geometry::Box3D& box) {
-    const double yaw = geometry::yawOf(box);
-    return box.size.x() > box.size.y() ? yaw + M_PI / 2 : yaw;
-}
+double noiseFrameYaw(const geometry::Box3D& box) { return world::classNoiseFrameYaw(box); }
 
 double centerScore(const geometry::Box3D& o1, const world::NoiseModel& noise, const Eigen::Vector3d& c) {
     // Eq. shiftdist: mu_o = mu + c_o, Sigma_o = R_o Sigma R_o^T  <=>  evaluate in the object frame.

@@ -1,4 +1,5 @@
 #include <simp/maps/ObjectDistribution.h>
+#include <simp/world/NoiseFrame.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -9,12 +10,14 @@
 
 namespace simp::maps {
 
-double noiseFrameYaw(const geometry::Box3D& box_world) {
-    const double yaw = geometry::yawOf(box_world);
-    return box_world.size.x() > box_world.size.y() ? yaw + M_PI / 2 : yaw;
-}
+double noiseFrameYaw(const geometry::Box3D& box_world) { return world::classNoiseFrameYaw(box_world); }
 
 ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise) {
+    return makeObjectDistribution(box_world, noise, noiseFrameYaw(box_world));
+}
+
+ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise,
+                                          double noise_frame_yaw) {
     if (!noise.mean_m.allFinite() || !noise.cov_m2.allFinite() || !std::isfinite(noise.exponent_b) ||
         noise.exponent_b <= 0.0)
         throw std::invalid_argument("noise model: mean, covariance and exponent b must be finite, b > 0");
@@ -23,7 +26,7 @@ ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, cons
         throw std::invalid_argument("noise model: covariance is not positive definite");
 
     // Eq. shiftdist: R_o = rotation into the object's noise frame, c_o = box centre on the ground.
-    const double yaw = noiseFrameYaw(box_world);
+    const double yaw = noise_frame_yaw;
     Eigen::Matrix2d R_o;
     R_o << std::cos(yaw), -std::sin(yaw), std::sin(yaw), std::cos(yaw);
     const Eigen::Matrix2d cov_world = R_o * sym * R_o.transpose();

@@ -1,4 +1,5 @@
 #include <simp/maps/ObjectProbabilityMap.h>
+#include <simp/world/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +43,7 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
             continue;
         }
         try {
-            m_distributions[i] = makeObjectDistribution(obj.box, *noise);
+            m_distributions[i] = makeObjectDistribution(obj.box, *noise, world::noiseFrameYawOf(obj));
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("object map: " + objectWhere(data, i) + " of class '" + cls + "': " + e.what());
         }

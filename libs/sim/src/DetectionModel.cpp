@@ -1,4 +1,5 @@
 #include <simp/sim/DetectionModel.h>
+#include <simp/world/NoiseFrame.h>
 #include <simp/sim/Furniture.h>
 
 #include <algorithm>
@@ -21,10 +22,7 @@ std::optional<obs::Detection3D> finish(const CameraView& view, obs::Detection3D 
 
 }  // namespace
 
-double noiseFrameYaw(const geometry::Box3D& box) {
-    const double yaw = geometry::yawOf(box);
-    return box.size.x() > box.size.y() ? yaw + M_PI / 2 : yaw;
-}
+double noiseFrameYaw(const geometry::Box3D& box) { return world::classNoiseFrameYaw(box); }
 
 world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p) {
     if (o.noise) return *o.noise;
@@ -74,7 +72,7 @@ Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObje
     }
     if (f < 1) e += std::sqrt(1.0 - f) * sampleCentreOffset(zero_mean, rng);
     // Eq. shiftdist: the class distribution rotated into the object's ground frame
-    const Eigen::Rotation2Dd R_o(noiseFrameYaw(o.box));
+    const Eigen::Rotation2Dd R_o(world::noiseFrameYawOf(o));  // own noise: box frame; class noise: noise frame
     Eigen::Vector2d dev = R_o * e;
     if (dist > 1e-9) {  // depth error along the viewing ray grows with distance
         const Eigen::Vector2d u = ray / dist;

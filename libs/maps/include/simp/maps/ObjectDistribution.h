@@ -53,6 +53,10 @@ double noiseFrameYaw(const geometry::Box3D& box_world);
 /// Eq. shiftdist for a map object's box (world frame, canonical upright) and its noise model.
 /// Throws std::invalid_argument when the noise model is not valid (Sigma not SPD, b <= 0).
 ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise);
+/// Same with the noise model's frame given (yaw, rad): world::noiseFrameYawOf(object) picks it
+/// (an object's own noise is in its box frame, a class model in the class noise frame).
+ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise,
+                                          double noise_frame_yaw);
 
 /// Mahalanobis radius m_s beyond which p_o < p_min: exp(-0.5 m_s^b) = p_min.
 double supportMahalanobisRadius(double exponent_b, double p_min);

@@ -6,13 +6,14 @@
 
 namespace simp::world {
 
-/// Distribution of a detected box centre around the true object centre, in the object
-/// frame on the ground (x = the object's local x axis projected on the floor, y = left of it).
+/// Distribution of a detected box centre around the true object centre, in the object's noise
+/// frame on the ground (NoiseFrame.h): for a class model, y along the object's longer horizontal
+/// side; for an object's own model (MapObject::noise), the box's own frame (x = its local x axis).
 /// Density shape: exp(-0.5 * m^(b)) with m the Mahalanobis distance for Sigma; b = 2 is a
 /// Gaussian, b = 4 a flatter generalized Gaussian (the authors' `b` column).
 struct NoiseModel {
-    Eigen::Vector2d mean_m{Eigen::Vector2d::Zero()};                  ///< mu (m), object frame
-    Eigen::Matrix2d cov_m2{Eigen::Matrix2d::Identity() * 0.04};       ///< Sigma (m^2), object frame
+    Eigen::Vector2d mean_m{Eigen::Vector2d::Zero()};                  ///< mu (m), noise frame
+    Eigen::Matrix2d cov_m2{Eigen::Matrix2d::Identity() * 0.04};       ///< Sigma (m^2), noise frame
     double exponent_b = 2.0;                                          ///< shape exponent, > 0
 
     /// True when all numbers are finite, Sigma is symmetric positive definite and b > 0.
