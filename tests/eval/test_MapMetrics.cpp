@@ -30,18 +30,24 @@ ObjectMapData mapWith(std::vector<std::string> classes, std::vector<MapObject> o
     return m;
 }
 
+/// Ground truth: tables T1 (0,0) and T2 (5,0), 2 x 1 m, 1 m high; chair (10,10) 0.5 x 0.5; a sofa.
+ObjectMapData knownGroundTruth() {
+    return mapWith({"table", "chair", "sofa"},
+                   {object(0, 0, 0, 2, 1), object(0, 5, 0, 2, 1), object(1, 10, 10, 0.5, 0.5), object(2, -5, -5, 2, 1)});
+}
+
+/// Prediction (another class order): table at (0.5,0), 0.5 m high; a table far from all; the
+/// chair shifted by 0.25 m; a plant nobody has; no sofa.
+ObjectMapData knownPrediction() {
+    return mapWith({"chair", "table", "plant"}, {object(1, 0.5, 0, 2, 1, 0.5), object(1, 20, 20, 2, 1),
+                                                 object(0, 10.25, 10, 0.5, 0.5), object(2, 3, 3, 0.4, 0.4)});
+}
+
 }  // namespace
 
 TEST(MapMetrics, KnownPerClassAndAverageValues) {
-    // Ground truth: tables T1 (0,0) and T2 (5,0), 2 x 1 m, 1 m high; chair (10,10) 0.5 x 0.5; a sofa.
-    const auto gt = mapWith({"table", "chair", "sofa"},
-                            {object(0, 0, 0, 2, 1), object(0, 5, 0, 2, 1), object(1, 10, 10, 0.5, 0.5),
-                             object(2, -5, -5, 2, 1)});
-    // Prediction (another class order): table at (0.5,0), 0.5 m high; a table far from all; the
-    // chair shifted by 0.25 m; a plant nobody has; no sofa.
-    const auto pred = mapWith({"chair", "table", "plant"},
-                              {object(1, 0.5, 0, 2, 1, 0.5), object(1, 20, 20, 2, 1), object(0, 10.25, 10, 0.5, 0.5),
-                               object(2, 3, 3, 0.4, 0.4)});
+    const auto gt = knownGroundTruth();
+    const auto pred = knownPrediction();
     const auto m = evaluateMap(gt, pred);
     ASSERT_EQ(m.per_class.size(), 4u);  // chair, plant, sofa, table
 
@@ -148,12 +154,8 @@ TEST(MapMetrics, ClassSelectionLeavesOtherClassesOut) {
     // Same maps as above; evaluating only table and chair drops the plant (no GT: precision 0)
     // and the sofa (nothing predicted: recall 0) from the averages, as the paper's Table I does
     // for classes the mapper does not build.
-    const auto gt = mapWith({"table", "chair", "sofa"},
-                            {object(0, 0, 0, 2, 1), object(0, 5, 0, 2, 1), object(1, 10, 10, 0.5, 0.5),
-                             object(2, -5, -5, 2, 1)});
-    const auto pred = mapWith({"chair", "table", "plant"},
-                              {object(1, 0.5, 0, 2, 1, 0.5), object(1, 20, 20, 2, 1), object(0, 10.25, 10, 0.5, 0.5),
-                               object(2, 3, 3, 0.4, 0.4)});
+    const auto gt = knownGroundTruth();
+    const auto pred = knownPrediction();
     MapMatchParams only;
     only.classes = {"table", "chair"};
     const auto m = evaluateMap(gt, pred, only);
