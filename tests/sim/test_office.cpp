@@ -7,6 +7,8 @@
 #include <simp/sim/Raster.h>
 #include <simp/sim/Trajectory.h>
 
+#include "SimTestUtil.h"
+
 #include <filesystem>
 #include <fstream>
 #include <queue>
@@ -15,19 +17,8 @@
 
 namespace {
 
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
-std::string tmpDir(const std::string& name) {
-    const auto d = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "sim" / name;
-    std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d);
-    return d.string();
-}
+std::string tmpDir(const std::string& name) { return simp::sim::test::emptyDir(name); }
+using simp::sim::test::slurp;
 
 /// Free cells reachable from (sx, sy) by 4-connected flood fill.
 std::vector<std::uint8_t> floodFill(const simp::sim::Raster& r, int sx, int sy) {

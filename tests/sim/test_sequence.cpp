@@ -15,24 +15,16 @@
 #include <simp/sim/WorldChanges.h>
 #include <simp/world/SimpFormat.h>
 
+#include "SimTestUtil.h"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace {
 
-std::string slurp(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
-std::string tmpDir(const std::string& name) {
-    const auto d = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "sim" / name;
-    std::filesystem::remove_all(d);
-    return d.string();
-}
+std::string tmpDir(const std::string& name) { return simp::sim::test::clearedDir(name); }
+using simp::sim::test::slurp;
 
 simp::world::World smallOffice() {
     simp::sim::OfficeParams p;
