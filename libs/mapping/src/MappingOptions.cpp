@@ -107,6 +107,11 @@ const ClassFilter& MappingOptions::filterOf(const std::string& class_name) const
     return it == per_class.end() ? default_filter : it->second;
 }
 
+double MappingOptions::duplicateCenterRadiusOf(const std::string& class_name) const {
+    const auto it = class_duplicate_center_radius_m.find(class_name);
+    return it == class_duplicate_center_radius_m.end() ? duplicate_center_radius_m : it->second;
+}
+
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
     readDouble(c, s, "trigger_dist_m", trigger_dist_m);
     readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
@@ -114,6 +119,15 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
     readBool(c, s, "merge_duplicates", merge_duplicates);
+    readDouble(c, s, "duplicate_tau_cost", duplicate_tau_cost);
+    readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
+    readDouble(c, s, "duplicate_center_radius_m", duplicate_center_radius_m);
+    readDouble(c, s, "duplicate_min_overlap", duplicate_min_overlap);
+    {
+        const std::string key = "class_duplicate_center_radius_m";
+        const std::string text = c.read_string(s, key, "", false);
+        if (!trim(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
+    }
     readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
     readDouble(c, s, "cost_covariance_scale", cost_covariance_scale);
     readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
@@ -163,6 +177,12 @@ void MappingOptions::validate() const {
     requireRange(tau_cost, 0.0, 1.0, "tau_cost");
     requireRange(tau_purge, 0.0, 1e6, "tau_purge");
     requireRange(min_local_detections, 1, 1e6, "min_local_detections");
+    requireRange(duplicate_tau_cost, 0.0, 1.0, "duplicate_tau_cost");
+    requireRange(duplicate_max_distance_m, 0.0, 1e3, "duplicate_max_distance_m");
+    requireRange(duplicate_center_radius_m, 0.0, 1e3, "duplicate_center_radius_m");
+    requireRange(duplicate_min_overlap, 0.0, 1.0, "duplicate_min_overlap");
+    for (const auto& [name, r] : class_duplicate_center_radius_m)
+        requireRange(r, 0.0, 1e3, ("class_duplicate_center_radius_m of class '" + name + "'").c_str());
     requireRange(default_noise_sigma_m, 1e-6, 1e3, "default_noise_sigma_m");
     requireRange(cost_covariance_scale, 1e-6, 1e6, "cost_covariance_scale");
     requireRange(truncation_threshold, 0.0, 1.0, "truncation_threshold");
@@ -196,7 +216,13 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
- o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
+    o << "duplicate_tau_cost    = " << duplicate_tau_cost << "\n";
+    o << "duplicate_max_distance_m = " << duplicate_max_distance_m << " m\n";
+    o << "duplicate_min_overlap = " << duplicate_min_overlap << (duplicate_min_overlap > 0 ? "" : " (off)") << "\n";
+    o << "duplicate_center_radius_m = " << duplicate_center_radius_m << " m";
+    for (const auto& [name, r] : class_duplicate_center_radius_m) o << ", " << name << ": " << r << " m";
+    o << "\n";
+    o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
     o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
     o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";

@@ -13,6 +13,7 @@
 namespace simp::mapping {
 namespace {
 constexpr double kForbiddenCost = 2.0;  ///< different classes: never associated
+constexpr double kNotDuplicate = 3.0;   ///< duplicateCost() of a pair that is not one object
 }  // namespace
 
 void ObjectMapBuilder::updateGroups() {
@@ -73,11 +74,26 @@ void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room,
     }
 }
 
+double ObjectMapBuilder::duplicateCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, int class_id,
+                                       const geometry::Box3D& o2) const {
+    const double dist = (o1.center - o2.center).head<2>().norm();
+    const double radius = m_options.duplicateCenterRadiusOf(m_g.class_names[class_id]);
+    if (m_options.duplicate_min_overlap > 0 && dist < 0.5 * (o1.size.norm() + o2.size.norm())) {
+        const double smaller = std::min(o1.size.prod(), o2.size.prod());
+        if (smaller > 0 && geometry::intersectionVolume(o1, o2) > m_options.duplicate_min_overlap * smaller)
+            return associationCost(o1, noise_o1, o2);
+    }
+    if (dist >= std::max(m_options.duplicate_max_distance_m, radius)) return kNotDuplicate;
+    const double c = associationCost(o1, noise_o1, o2);
+    if (dist < radius) return c;
+    return dist < m_options.duplicate_max_distance_m && c < m_options.duplicate_tau_cost ? c : kNotDuplicate;
+}
+
 void ObjectMapBuilder::mergeLocalDuplicates() {
-    // Greedy: merge the lowest-cost same-class pair while its cost is below tau_cost
+    // Greedy: merge the lowest-cost duplicate pair (duplicateCost) until none is left
     // (o1 = the object with more detections, Eq. costfunc).
     for (;;) {
-        double best = m_options.tau_cost;
+        double best = kNotDuplicate;
         std::size_t bi = 0, bj = 0;
         for (std::size_t i = 0; i < m_local.size(); ++i)
             for (std::size_t j = i + 1; j < m_local.size(); ++j) {
@@ -85,10 +101,10 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
                 const bool i_ref = m_local[i].n_match >= m_local[j].n_match;
                 const LocalObject& a = i_ref ? m_local[i] : m_local[j];
                 const LocalObject& b = i_ref ? m_local[j] : m_local[i];
-                const double c = associationCost(a.box, noiseOfClass(a.class_id), b.box);
+                const double c = duplicateCost(a.box, noiseOfClass(a.class_id), a.class_id, b.box);
                 if (c < best) best = c, bi = i, bj = j;
             }
-        if (best >= m_options.tau_cost) return;
+        if (best >= kNotDuplicate) return;
         LocalObject& keep = m_local[bi].n_match >= m_local[bj].n_match ? m_local[bi] : m_local[bj];
         const LocalObject& drop = &keep == &m_local[bi] ? m_local[bj] : m_local[bi];
         keep.box = mergeBoxes(keep.box, keep.n_match, drop.box, drop.n_match);
@@ -104,7 +120,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
     std::vector<bool> removed(m_g.objects.size(), false);
     std::size_t n_removed = 0;
     for (;;) {
-        double best = m_options.tau_cost;
+        double best = kNotDuplicate;
         std::size_t keep = 0, drop = 0;
         for (std::size_t a = 0; a < idx.size(); ++a)
             for (std::size_t b = a + 1; b < idx.size(); ++b) {
@@ -112,10 +128,11 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
                 if (removed[i] || removed[j] || m_g.objects[i].class_id != m_g.objects[j].class_id) continue;
                 const std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
                 const std::size_t o = r == i ? j : i;
-                const double c = associationCost(m_g.objects[r].box, noiseOfObject(m_g.objects[r]), m_g.objects[o].box);
+                const double c = duplicateCost(m_g.objects[r].box, noiseOfObject(m_g.objects[r]), m_g.objects[r].class_id,
+                                               m_g.objects[o].box);
                 if (c < best) best = c, keep = r, drop = o;
             }
-        if (best >= m_options.tau_cost) break;
+        if (best >= kNotDuplicate) break;
         world::MapObject& k = m_g.objects[keep];
         const world::MapObject& d = m_g.objects[drop];
         k.box = mergeBoxes(k.box, k.n_match, d.box, d.n_match);

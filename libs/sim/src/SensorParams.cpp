@@ -90,6 +90,8 @@ void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, co
     persistent_variance_fraction = cfg.read_double(s, "persistent_variance_fraction", persistent_variance_fraction);
     viewpoint_bin_deg = cfg.read_double(s, "viewpoint_bin_deg", viewpoint_bin_deg);
     viewpoint_bin_m = cfg.read_double(s, "viewpoint_bin_m", viewpoint_bin_m);
+    noise_model_includes_extent = cfg.read_bool(s, "noise_model_includes_extent", noise_model_includes_extent);
+    min_centre_noise_fraction = cfg.read_double(s, "min_centre_noise_fraction", min_centre_noise_fraction);
     check(prob(detection_probability), s, "detection_probability", "must be in [0, 1]");
     check(default_noise_std_m > 0, s, "default_noise_std_m", "must be > 0");
     check(z_std_m >= 0 && size_std_fraction >= 0 && yaw_std_rad >= 0, s, "z_std_m/size_std_fraction/yaw_std_rad",
@@ -101,6 +103,8 @@ void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, co
     check(reference_distance_m > 0, s, "reference_distance_m", "must be > 0");
     check(prob(persistent_variance_fraction), s, "persistent_variance_fraction", "must be in [0, 1]");
     check(viewpoint_bin_deg > 0 && viewpoint_bin_m > 0, s, "viewpoint_bin_deg/viewpoint_bin_m", "must be > 0");
+    check(min_centre_noise_fraction > 0 && min_centre_noise_fraction <= 1, s, "min_centre_noise_fraction",
+          "must be in (0, 1]");
 }
 
 void FalsePositiveParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {

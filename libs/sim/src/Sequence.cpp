@@ -140,7 +140,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
                 for (const auto& v : visibleObjects(view, scene, names, walls, params.visibility)) {
                     const auto& o = scene[v.index];
                     const bool is_person = v.index >= n_static;
-                    const auto noise = is_person ? person_noise : noiseFor(w.objects, o, params.detector);
+                    const auto noise = is_person ? person_noise : centreNoiseOf(noiseFor(w.objects, o, params.detector), o, params.detector);
                     if (auto d = detectObject(view, o, noise, names.size(), params.detector, rng_det, noise_seed)) {
                         dets.push_back(*d);
                         ++(is_person ? summary.person_detections : summary.true_detections);

@@ -42,6 +42,21 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.
     bool merge_duplicates = true;
+    /// @name Duplicate merging (merge_duplicates; the authors' mergeObjects in SIMP.py): a same-class
+    /// pair is one object when its centres are closer than duplicate_center_radius_m (per class:
+    /// class_duplicate_center_radius_m), or when its Eq. costfunc cost is below duplicate_tau_cost
+    /// and its centres are closer than duplicate_max_distance_m. Lowest-cost pairs merge first.
+    /// @{
+    double duplicate_tau_cost = 0.7;         ///< authors: 0.7
+    double duplicate_max_distance_m = 1.0;   ///< authors: 1.0 m
+    double duplicate_center_radius_m = 0.5;  ///< authors: 0.5 m (sofa 1.0 m)
+    std::map<std::string, double> class_duplicate_center_radius_m{{"sofa", 1.0}};
+    /// Project rule: a same-class pair whose 3D intersection is more than this fraction of the
+    /// smaller box is one object (solid furniture does not interpenetrate); 0 disables.
+    double duplicate_min_overlap = 0.0;
+    /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
+    double duplicateCenterRadiusOf(const std::string& class_name) const;
+    /// @}
     /// I_active: do intersecting map boxes occlude each other? false: boxes that intersect in 3D
     /// are treated as one group that does not hide itself (duplicates become active, get n_skip
     /// and are purged). Project option; measured in doc/results.md.

@@ -94,6 +94,10 @@ class ObjectMapBuilder {
     world::NoiseModel noiseOfClass(int class_id) const;
     world::NoiseModel noiseOfObject(const world::MapObject& o) const;
     void insertIntoLocalMap(const std::vector<LocalObject>& detections);
+    /// Eq. costfunc cost of a same-class pair when the duplicate rules (MappingOptions) make it one
+    /// object, else a value > 1.
+    double duplicateCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, int class_id,
+                         const geometry::Box3D& o2) const;
     void mergeLocalDuplicates();
     /// Merges duplicates among the map objects with the given ids; returns how many were removed.
     std::size_t mergeMapDuplicates(const std::set<std::int64_t>& ids);

@@ -26,6 +26,13 @@ double noiseFrameYaw(const geometry::Box3D& box);
 /// Gaussian of std default_noise_std_m.
 world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p);
 
+/// The centre noise of detections of `o` given its noise model `model` (noiseFor()): `model` itself
+/// unless p.noise_model_includes_extent; then, per axis i of the model's frame, the covariance
+/// of the model's shape (offsetCovariance()) minus the variance of a uniform footprint of the
+/// object along that axis (side^2 / 12), floored at (min_centre_noise_fraction * model std)^2,
+/// applied by scaling Sigma (the shape b and the mean mu are kept).
+world::NoiseModel centreNoiseOf(const world::NoiseModel& model, const world::MapObject& o, const DetectorParams& p);
+
 /// An upright world box (local z up) as a camera-frame box with the detector's axis convention
 /// (Omni3D: size = (W, H, L), H along the box's y axis, which points down like the camera's y).
 geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const Eigen::Isometry3d& T_camera_world);

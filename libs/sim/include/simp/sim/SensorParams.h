@@ -62,6 +62,14 @@ struct DetectorParams {
     /// Viewpoint cells of the persistent component: bearing object -> camera (deg) and distance (m).
     double viewpoint_bin_deg = 45.0;
     double viewpoint_bin_m = 1.5;
+    /// The class / object noise models are the authors' fits to heatmaps of rasterized detected
+    /// FOOTPRINTS (doc/simulator.md "Detection noise"), so their spread includes the object's own
+    /// extent: true = the centre noise is the model's covariance minus the footprint's (uniform
+    /// box: side^2 / 12 per axis of the noise frame); false = the model is the centre noise.
+    bool noise_model_includes_extent = true;
+    /// Lower bound of the centre-noise std per axis, as a fraction of the model's std (where the
+    /// extent explains nearly all of the model's spread).
+    double min_centre_noise_fraction = 0.25;
 
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
