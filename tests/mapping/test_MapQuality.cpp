@@ -43,12 +43,12 @@ TEST(MapQuality, BuiltInOfficeKnownPoses) {
     const simp::eval::MapMetrics m = simp::eval::evaluateMap(gt, built, p);
     std::cout << "map quality: IoU " << m.iou << ", precision " << m.precision << ", recall " << m.recall << "\n";
     // The paper's known-poses map (Table I, KP): IoU 0.67, Pr 0.96, Rc 0.94. The method does NOT
-    // reach that on the simulator with the authors' detection noise (doc/results.md explains why:
-    // the authors' class_noise.csv spreads, e.g. desk 1.0 m, with tau_cost = 0.3 leave duplicates).
-    // What it reaches here (2026-11-22, this world and seed): IoU 0.53, Pr 0.20, Rc 0.84 (over the
-    // classes present). Asserted with a margin of ~0.1 below those measured values, so that a
-    // regression is caught.
-    EXPECT_GT(m.iou, 0.45);
-    EXPECT_GT(m.recall, 0.70);
-    EXPECT_GT(m.precision, 0.12);
+    // reach all of them on the simulator (doc/results.md explains why: desks, sofas and cabinets keep
+    // 0.4-0.9 m of centre noise along their length even after the footprint extent is taken out of
+    // the authors' heatmap spreads). What it reaches here (2026-11-22, this 4-room world and seed):
+    // IoU 0.55, Pr 0.94, Rc 0.88 (over the classes present). Asserted with a margin of ~0.08 below
+    // those measured values, so that a regression is caught.
+    EXPECT_GT(m.iou, 0.47);
+    EXPECT_GT(m.recall, 0.80);
+    EXPECT_GT(m.precision, 0.86);
 }

@@ -60,6 +60,32 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("class_min_confidence = sink 0.7", "class_min_confidence");
     expectThrowNaming("class_min_confidence = sink:high", "class_min_confidence");
     expectThrowNaming("class_min_confidence = sink:1.5", "sink");
+    expectThrowNaming("duplicate_tau_cost = 1.5", "duplicate_tau_cost");
+    expectThrowNaming("duplicate_min_overlap = -0.1", "duplicate_min_overlap");
+    expectThrowNaming("duplicate_center_radius_m = wide", "duplicate_center_radius_m");
+    expectThrowNaming("class_duplicate_center_radius_m = sofa", "class_duplicate_center_radius_m");
+    expectThrowNaming("class_duplicate_center_radius_m = sofa:-1", "sofa");
+}
+
+TEST(MappingOptions, DuplicateRulesLoadWithPerClassRadius) {
+    const MappingOptions defaults;
+    EXPECT_DOUBLE_EQ(defaults.duplicateCenterRadiusOf("desk"), 0.5);  // the authors' centerMerge
+    EXPECT_DOUBLE_EQ(defaults.duplicateCenterRadiusOf("sofa"), 1.0);
+    mrpt::config::CConfigFileMemory ini(
+        "[mapping]\n"
+        "duplicate_center_radius_m = 0.3\n"
+        "class_duplicate_center_radius_m = desk:0.8, potted plant:0.2\n"
+        "duplicate_tau_cost = 0.6\n"
+        "duplicate_max_distance_m = 1.2\n"
+        "duplicate_min_overlap = 0.25\n");
+    MappingOptions o;
+    o.loadFromConfigFile(ini, "mapping");
+    EXPECT_DOUBLE_EQ(o.duplicateCenterRadiusOf("desk"), 0.8);
+    EXPECT_DOUBLE_EQ(o.duplicateCenterRadiusOf("potted plant"), 0.2);
+    EXPECT_DOUBLE_EQ(o.duplicateCenterRadiusOf("sofa"), 0.3);  // the list replaces the default list
+    EXPECT_DOUBLE_EQ(o.duplicate_tau_cost, 0.6);
+    EXPECT_DOUBLE_EQ(o.duplicate_max_distance_m, 1.2);
+    EXPECT_DOUBLE_EQ(o.duplicate_min_overlap, 0.25);
 }
 
 TEST(MappingOptions, TheShippedIniLoadsAndMatchesTheDefaults) {

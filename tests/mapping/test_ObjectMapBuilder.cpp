@@ -123,6 +123,68 @@ TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
     }
 }
 
+namespace {
+
+simp::world::MapObject mapObject(std::int64_t id, int cls, const simp::geometry::Box3D& box, int n_match) {
+    simp::world::MapObject o;
+    o.id = id;
+    o.class_id = cls;
+    o.box = box;
+    o.n_match = n_match;
+    return o;
+}
+
+/// Builder over an 8 m x 6 m room holding `objects`, after one window in which the robot at
+/// (2, 3) looking along +x saw them all (and detected nothing).
+ObjectMapBuilder afterOneEmptyWindow(const MappingOptions& opts, const std::vector<simp::world::MapObject>& objects) {
+    ObjectMapBuilder b(opts);
+    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+    auto map = emptyMap();
+    map.objects = objects;
+    b.setMap(map);
+    std::mt19937 rng(3);
+    const mrpt::poses::CPose3D pose(2.0, 3.0, 0, 0, 0, 0);
+    insertAll(b, test::observe({}, kClasses, pose, rng), pose);
+    b.flush();
+    return b;
+}
+
+}  // namespace
+
+TEST(ObjectMapBuilder, DuplicatesWithinTheCentreRadiusMerge) {
+    // Two cabinets 0.4 m apart (< duplicate_center_radius_m = 0.5, the authors' centerMerge) are one
+    // object; a third 1.3 m away (disjoint box, cost ~1 > duplicate_tau_cost) stays.
+    const auto opts = test::testOptions();
+    ASSERT_DOUBLE_EQ(opts.duplicateCenterRadiusOf("cabinet"), 0.5);
+    const ObjectMapBuilder b = afterOneEmptyWindow(
+        opts, {mapObject(1, 1, makeUprightBox({5.0, 2.0, 0.45}, {0.5, 0.5, 0.9}, 0.0), 30),
+               mapObject(2, 1, makeUprightBox({5.0, 2.4, 0.45}, {0.5, 0.5, 0.9}, 0.0), 10),
+               mapObject(3, 1, makeUprightBox({5.0, 3.7, 0.45}, {0.5, 0.5, 0.9}, 0.0), 20)});
+    ASSERT_EQ(b.map().objects.size(), 2u);
+    const auto* merged = closest(b.map(), 1, {5.0, 2.1, 0.45});
+    ASSERT_NE(merged, nullptr);
+    EXPECT_EQ(merged->n_match, 40);
+    EXPECT_NEAR(merged->box.center.y(), (30 * 2.0 + 10 * 2.4) / 40, 1e-9);  // n_match-weighted
+    EXPECT_EQ(b.stats().duplicates_merged, 1u);
+}
+
+TEST(ObjectMapBuilder, OverlapRuleMergesInterpenetratingBoxesOnlyWhenEnabled) {
+    // Two tables 1.6 m long, 0.6 m apart along their length: 62 % of either box is shared. Their
+    // Eq. costfunc cost is ~0.77 (IoU 0.45, centres 3 sigma apart), above duplicate_tau_cost = 0.7,
+    // and 0.6 m > the 0.5 m centre radius: only the overlap rule makes them one object.
+    const std::vector<simp::world::MapObject> tables = {
+        mapObject(1, 0, makeUprightBox({5.0, 2.7, 0.375}, {0.8, 1.6, 0.75}, 0.0), 20),
+        mapObject(2, 0, makeUprightBox({5.0, 3.3, 0.375}, {0.8, 1.6, 0.75}, 0.0), 20)};
+    auto opts = test::testOptions();
+    EXPECT_EQ(afterOneEmptyWindow(opts, tables).map().objects.size(), 2u);
+    opts.duplicate_min_overlap = 0.5;
+    const ObjectMapBuilder b = afterOneEmptyWindow(opts, tables);
+    ASSERT_EQ(b.map().objects.size(), 1u);
+    EXPECT_NEAR(b.map().objects[0].box.center.y(), 3.0, 1e-9);
+    opts.duplicate_min_overlap = 0.7;  // 62 % < 70 %
+    EXPECT_EQ(afterOneEmptyWindow(opts, tables).map().objects.size(), 2u);
+}
+
 TEST(ObjectMapBuilder, DetectionInAnotherRoomDoesNotTouchThatRoom) {
     // Rooms: x < 5 and x > 5 (door at y in [2.6, 3.4]). Object A in the left room.
     const auto grid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);

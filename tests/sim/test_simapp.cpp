@@ -59,6 +59,10 @@ TEST(SimApp, IniValuesAreCheckedByKey) {
     EXPECT_NE(errorOfIni("[visibility]\nmax_range_m = 1 2 3\n").find("max_range_m"), std::string::npos);
     EXPECT_NE(errorOfIni("[cameras]\ncount = 0\n").find("count"), std::string::npos);
     EXPECT_NE(errorOfIni("[changes]\nfraction = -0.1\n").find("fraction"), std::string::npos);
+    EXPECT_NE(errorOfIni("[detector]\nmin_centre_noise_fraction = 0\n").find("min_centre_noise_fraction"),
+              std::string::npos);
+    EXPECT_NE(errorOfIni("[detector]\nnoise_model_includes_extent = maybe\n").find("noise_model_includes_extent"),
+              std::string::npos);
     // the shipped sim.ini loads
     mrpt::config::CConfigFileMemory shipped;
     const std::string path = std::string(SIMP_SOURCE_DIR) + "/config_ini/sim.ini";

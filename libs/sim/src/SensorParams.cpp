@@ -1,5 +1,7 @@
 #include <simp/sim/SensorParams.h>
 
+#include <mrpt/system/string_utils.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -11,6 +13,16 @@ void check(bool ok, const std::string& section, const std::string& key, const st
     if (!ok) throw std::invalid_argument("[" + section + "] " + key + ": " + what);
 }
 bool prob(double v) { return v >= 0 && v <= 1; }
+
+/// true / false / 1 / 0 / yes / no; absent keeps `def`; anything else throws naming the key.
+bool readStrictBool(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key, bool def) {
+    const std::string text = mrpt::system::trim(cfg.read_string(s, key, ""));
+    if (text.empty()) return def;
+    if (text == "true" || text == "1" || text == "yes") return true;
+    if (text == "false" || text == "0" || text == "no") return false;
+    check(false, s, key, "'" + text + "' is not true or false");
+    return def;
+}
 
 std::vector<double> readPerClass(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
                                  const std::vector<double>& def, std::size_t num_classes) {
@@ -90,7 +102,7 @@ void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, co
     persistent_variance_fraction = cfg.read_double(s, "persistent_variance_fraction", persistent_variance_fraction);
     viewpoint_bin_deg = cfg.read_double(s, "viewpoint_bin_deg", viewpoint_bin_deg);
     viewpoint_bin_m = cfg.read_double(s, "viewpoint_bin_m", viewpoint_bin_m);
-    noise_model_includes_extent = cfg.read_bool(s, "noise_model_includes_extent", noise_model_includes_extent);
+    noise_model_includes_extent = readStrictBool(cfg, s, "noise_model_includes_extent", noise_model_includes_extent);
     min_centre_noise_fraction = cfg.read_double(s, "min_centre_noise_fraction", min_centre_noise_fraction);
     check(prob(detection_probability), s, "detection_probability", "must be in [0, 1]");
     check(default_noise_std_m > 0, s, "default_noise_std_m", "must be > 0");
