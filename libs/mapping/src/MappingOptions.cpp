@@ -1,4 +1,5 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/NameValueList.h>
 #include <simp/mapping/MappingOptions.h>
 
 #include <cmath>
@@ -76,25 +77,7 @@ constexpr AuthorsRow kAuthorsFilters[] = {
 
 std::map<std::string, double> parseClassValueList(const std::string& text, const std::string& key) {
     std::map<std::string, double> out;
-    std::stringstream ss(text);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        if (trim(item).empty()) continue;
-        const auto colon = item.rfind(':');
-        if (colon == std::string::npos)
-            throw std::invalid_argument("mapping option '" + key + "': entry '" + trim(item) + "' is not 'class:value'");
-        const std::string name = trim(item.substr(0, colon));
-        const std::string num = trim(item.substr(colon + 1));
-        if (name.empty()) throw std::invalid_argument("mapping option '" + key + "': entry '" + trim(item) + "' has no class name");
-        try {
-            std::size_t used = 0;
-            const double v = std::stod(num, &used);
-            if (used != num.size() || !std::isfinite(v)) throw std::invalid_argument("bad");
-            out[name] = v;
-        } catch (const std::exception&) {
-            throw std::invalid_argument("mapping option '" + key + "': value '" + num + "' of class '" + name + "' is not a finite number");
-        }
-    }
+    for (const auto& [name, value] : io::parseNameValueList(text, "mapping option '" + key + "'")) out[name] = value;
     return out;
 }
 

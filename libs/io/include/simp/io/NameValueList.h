@@ -1,0 +1,17 @@
+#pragma once
+/// \file NameValueList.h
+/// The per-class list syntax of the .ini files: "name:value, name:value, ..." (class names may
+/// contain spaces; the value follows the last ':'; surrounding blanks and quotes are ignored).
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace simp::io {
+
+/// The entries of `text` in order (a name may repeat; callers decide). Values are finite numbers.
+/// \throw std::invalid_argument starting with `where` and naming the entry when it has no ':',
+///        an empty name, or a value that is not a finite number.
+std::vector<std::pair<std::string, double>> parseNameValueList(const std::string& text, const std::string& where);
+
+}  // namespace simp::io
