@@ -1,5 +1,6 @@
 #include "TestUtil.h"
 
+#include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <cmath>
@@ -8,7 +9,14 @@
 namespace simp::localization::test {
 
 const Scenario& sharedScenario() {
-    static const Scenario sc = makeScenario(std::string(SIMP_TEST_OUTPUT_DIR) + "/localization/scenario", 42);
+    // One copy per test process: ctest runs tests in parallel processes, and a scenario rewritten by one
+    // process while another reads its rawlog made the same-seed test see different inputs.
+    static const Scenario sc = [] {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        const std::string owner =
+            info ? std::string(info->test_suite_name()) + "." + info->name() : std::string("no_test");
+        return makeScenario(std::string(SIMP_TEST_OUTPUT_DIR) + "/localization/scenario/" + owner, 42);
+    }();
     return sc;
 }
 
