@@ -22,7 +22,8 @@ TEST(MapQuality, BuiltInOfficeKnownPoses) {
         if (app.initialize(args, log)) app.run(log);
     };
     sim({"world", "--builtin", "office", "--rooms", "4", "--seed", "7", "--out", W});
-    sim({"sequence", "--world", W, "--seed", "7", "--duration", "240", "--out", Q});
+    // a mapping run: every room visited, a full turn in each part of it (simp-sim --coverage)
+    sim({"sequence", "--world", W, "--seed", "7", "--duration", "240", "--coverage", "--out", Q});
     simp::mapping::MapAppArgs a;
     a.world_dir = W;
     a.rawlog_path = Q + "/sequence.rawlog";
@@ -43,12 +44,12 @@ TEST(MapQuality, BuiltInOfficeKnownPoses) {
     const simp::eval::MapMetrics m = simp::eval::evaluateMap(gt, built, p);
     std::cout << "map quality: IoU " << m.iou << ", precision " << m.precision << ", recall " << m.recall << "\n";
     // The paper's known-poses map (Table I, KP): IoU 0.67, Pr 0.96, Rc 0.94. The method does NOT
-    // reach all of them on the simulator (doc/results.md explains why: desks, sofas and cabinets keep
-    // 0.4-0.9 m of centre noise along their length even after the footprint extent is taken out of
-    // the authors' heatmap spreads). What it reaches here (2026-11-22, this 4-room world and seed):
-    // IoU 0.55, Pr 0.94, Rc 0.88 (over the classes present). Asserted with a margin of ~0.08 below
-    // those measured values, so that a regression is caught.
-    EXPECT_GT(m.iou, 0.47);
-    EXPECT_GT(m.recall, 0.80);
-    EXPECT_GT(m.precision, 0.86);
+    // reach all of them on the simulator (doc/results.md explains why: the authors' noise models
+    // leave desks, sofas, cabinets and boards 0.2-0.8 m of persistent centre noise along their
+    // length, which the map's averages keep). What it reaches here (2026-11-22, this 4-room world,
+    // seed and coverage run): IoU 0.53, Pr 0.82, Rc 0.93 over the classes present. Asserted ~0.08
+    // below those measured values, so that a regression is caught.
+    EXPECT_GT(m.iou, 0.45);
+    EXPECT_GT(m.recall, 0.85);
+    EXPECT_GT(m.precision, 0.74);
 }

@@ -11,6 +11,7 @@ TEST(MappingOptions, DefaultsAreTheAuthors) {
     EXPECT_DOUBLE_EQ(o.trigger_angle_rad, 0.1);
     EXPECT_DOUBLE_EQ(o.tau_cost, 0.3);
     EXPECT_DOUBLE_EQ(o.truncation_threshold, 0.5);
+    EXPECT_DOUBLE_EQ(o.min_local_support, 0.3);  // authors: purgeDetections, 0.3 x detc_cnt
     EXPECT_DOUBLE_EQ(o.filterOf("sink").min_confidence, 0.7);
     EXPECT_DOUBLE_EQ(o.filterOf("board").min_range_m, 1.5);
     EXPECT_DOUBLE_EQ(o.filterOf("cabinet").max_range_m, 5.0);
@@ -23,6 +24,7 @@ TEST(MappingOptions, LoadsKeysAndPerClassLists) {
         "[mapping]\n"
         "tau_cost = 0.25\n"
         "trigger_dist_m = 0.1\n"
+        "min_local_support = 0.5\n"
         "room_update_policy = all\n"
         "class_min_confidence = potted plant: 0.5, sofa:0.6\n"
         "class_max_range_m = lamp:3.5\n");
@@ -30,6 +32,7 @@ TEST(MappingOptions, LoadsKeysAndPerClassLists) {
     o.loadFromConfigFile(ini, "mapping");
     EXPECT_DOUBLE_EQ(o.tau_cost, 0.25);
     EXPECT_DOUBLE_EQ(o.trigger_dist_m, 0.1);
+    EXPECT_DOUBLE_EQ(o.min_local_support, 0.5);
     EXPECT_DOUBLE_EQ(o.trigger_angle_rad, 0.1);  // absent key keeps the default
     EXPECT_EQ(o.room_policy, RoomUpdatePolicy::All);
     EXPECT_DOUBLE_EQ(o.filterOf("potted plant").min_confidence, 0.5);
@@ -65,6 +68,8 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("duplicate_center_radius_m = wide", "duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa", "class_duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa:-1", "sofa");
+    expectThrowNaming("min_local_support = -0.3", "min_local_support");
+    expectThrowNaming("min_local_support = often", "min_local_support");
 }
 
 TEST(MappingOptions, DuplicateRulesLoadWithPerClassRadius) {

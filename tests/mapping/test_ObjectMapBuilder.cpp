@@ -4,6 +4,8 @@
 
 #include "MappingTestScene.h"
 
+#include <map>
+
 using namespace simp::mapping;
 using simp::geometry::makeUprightBox;
 
@@ -298,4 +300,35 @@ TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
     };
     EXPECT_EQ(run(false), 1u);
     EXPECT_EQ(run(true), 2u);
+}
+
+TEST(ObjectMapBuilder, OneOffDetectionOfAWindowDoesNotReachTheMap) {
+    // A table seen in every step of a window, a cabinet (a false or stray detection) in one of 10.
+    const std::vector<test::TrueObject> steady = {{0, makeUprightBox({5.0, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};
+    std::vector<test::TrueObject> with_stray = steady;
+    with_stray.push_back({1, makeUprightBox({5.0, 4.5, 0.9}, {0.5, 1.0, 1.8}, 0.0)});
+    const auto run = [&](double min_support) {
+        auto opts = test::testOptions();
+        opts.min_local_support = min_support;
+        ObjectMapBuilder b(opts);
+        b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+        b.setMap(emptyMap());
+        std::mt19937 rng(5);
+        for (int s = 0; s < 10; ++s) {  // 10 steps 1 cm apart: one window (trigger 0.2 m)
+            const mrpt::poses::CPose3D pose(2.5 + 0.01 * s, 3.0, 0, 0, 0, 0);
+            insertAll(b, test::observe(s == 4 ? with_stray : steady, kClasses, pose, rng), pose);
+        }
+        b.flush();
+        std::map<int, int> per_class;
+        for (const auto& o : b.map().objects) ++per_class[o.class_id];
+        return per_class;
+    };
+    // The authors' rule: 1 detection < 0.3 x 10 steps -> dropped; the table (10 of 10) stays.
+    auto kept = run(0.3);
+    EXPECT_EQ(kept[0], 1);
+    EXPECT_EQ(kept[1], 0);
+    // Without the rule the stray detection becomes a map object.
+    kept = run(0.0);
+    EXPECT_EQ(kept[0], 1);
+    EXPECT_EQ(kept[1], 1);
 }

@@ -101,6 +101,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_cost", tau_cost);
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
+    readDouble(c, s, "min_local_support", min_local_support);
     readBool(c, s, "merge_duplicates", merge_duplicates);
     readDouble(c, s, "duplicate_tau_cost", duplicate_tau_cost);
     readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
@@ -160,6 +161,7 @@ void MappingOptions::validate() const {
     requireRange(tau_cost, 0.0, 1.0, "tau_cost");
     requireRange(tau_purge, 0.0, 1e6, "tau_purge");
     requireRange(min_local_detections, 1, 1e6, "min_local_detections");
+    requireRange(min_local_support, 0.0, 1e3, "min_local_support");
     requireRange(duplicate_tau_cost, 0.0, 1.0, "duplicate_tau_cost");
     requireRange(duplicate_max_distance_m, 0.0, 1e3, "duplicate_max_distance_m");
     requireRange(duplicate_center_radius_m, 0.0, 1e3, "duplicate_center_radius_m");
@@ -198,6 +200,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_cost              = " << tau_cost << "\n";
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
+    o << "min_local_support     = " << min_local_support << " detections per time step\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
     o << "duplicate_tau_cost    = " << duplicate_tau_cost << "\n";
     o << "duplicate_max_distance_m = " << duplicate_max_distance_m << " m\n";

@@ -2,6 +2,7 @@
 // The integration into m_g is in ObjectMapBuilder_integrate.cpp, visibility in
 // ObjectMapBuilder_visibility.cpp.
 #include <mrpt/math/wrap2pi.h>
+#include <mrpt/system/datetime.h>
 #include <simp/geometry/Hungarian.h>
 #include <simp/mapping/AssociationCost.h>
 #include <simp/mapping/DetectionBox.h>
@@ -55,6 +56,8 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_window_active.clear();
     m_window_candidates.clear();
     m_window_start.reset();
+    m_window_steps = 0;
+    m_last_step.reset();
     m_groups_valid = false;
 }
 
@@ -140,6 +143,12 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         if (dxy > m_options.trigger_dist_m || dth > m_options.trigger_angle_rad) flush();
     }
     if (!m_window_start) m_window_start = robot_pose;
+    // The window's support counts time steps: the cameras of one step come with the same robot
+    // pose and stamps within a few milliseconds of each other.
+    const bool same_step = m_last_step && m_window_steps > 0 && m_last_step->second == robot_pose &&
+                           std::abs(mrpt::system::timeDifference(m_last_step->first, obs.timestamp)) < 0.05;
+    if (!same_step) ++m_window_steps;
+    m_last_step = {obs.timestamp, robot_pose};
 
     const int current_room =
         m_options.room_policy == RoomUpdatePolicy::All ? 0 : roomOf(robot_pose.x(), robot_pose.y());

@@ -153,6 +153,8 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
 
 void ObjectMapBuilder::flush() {
     m_window_start.reset();
+    const double window_steps = static_cast<double>(m_window_steps);
+    m_window_steps = 0;
     if (m_local.empty() && m_window_active.empty()) {
         m_window_candidates.clear();
         return;
@@ -166,7 +168,8 @@ void ObjectMapBuilder::flush() {
     // Local objects seen often enough, and the association candidates of the map.
     std::vector<const LocalObject*> locals;
     for (const auto& l : m_local)
-        if (l.n_match >= m_options.min_local_detections) locals.push_back(&l);
+        if (l.n_match >= m_options.min_local_detections && l.n_match >= m_options.min_local_support * window_steps)
+            locals.push_back(&l);
     std::vector<std::size_t> cands;
     for (const std::int64_t id : m_window_candidates)
         if (const auto it = index_of.find(id); it != index_of.end()) cands.push_back(it->second);

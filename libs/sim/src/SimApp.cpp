@@ -48,7 +48,7 @@ std::string SimApp::usage() {
            "\n"
            "  simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]\n"
            "      writes the world directory W (floorplan.yaml/.png, rooms.png, objects.json)\n"
-           "  simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F]\n"
+           "  simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]\n"
            "      writes Q/sequence.rawlog, Q/groundtruth.tum, Q/world/ and Q/overview.png\n"
            "      (--world-in W is a synonym of --world)\n"
            "\n"
@@ -56,6 +56,8 @@ std::string SimApp::usage() {
            "  --config INI   MRPT .ini with the simulator's knobs (config_ini/sim.ini documents all)\n"
            "  --duration SEC simulated time (s), overrides [sequence] duration_s\n"
            "  --changes F    fraction in [0, 1] of objects removed/moved/added and of doors closed\n"
+           "  --coverage     visit the rooms nearest-first with a full turn in each (a mapping run);\n"
+           "                 same as [trajectory] visit_order = coverage\n"
            "  --size-m2 A    target floor area (m^2) of the built-in office; --rooms N: number of rooms\n";
 }
 
@@ -71,6 +73,10 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
         throw std::invalid_argument("unknown command '" + command + "' (expected 'world' or 'sequence')");
     for (std::size_t i = 1; i < args.size(); ++i) {
         const std::string& opt = args[i];
+        if (command == "sequence" && opt == "--coverage") {
+            coverage = true;
+            continue;
+        }
         if (i + 1 >= args.size()) throw std::invalid_argument("option " + opt + " needs a value");
         const std::string& v = args[++i];
         if (opt == "--seed") {
@@ -127,6 +133,7 @@ void SimApp::run(std::ostream& out) {
     p.loadFromConfig(*cfg);
     if (duration_s) p.duration_s = *duration_s;
     if (changes) p.changes.fraction = *changes;
+    if (coverage) p.trajectory.coverage = true;
     if (!mrpt::system::directoryExists(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     const world::World w = world::loadWorld(world_dir);
     const auto s = simulateSequence(w, p, seed, out_dir);

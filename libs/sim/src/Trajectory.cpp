@@ -49,6 +49,12 @@ void TrajectoryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, 
     turn_in_place_rad = cfg.read_double(s, "turn_in_place_rad", turn_in_place_rad);
     spin_probability = cfg.read_double(s, "spin_probability", spin_probability);
     waypoint_tolerance_m = cfg.read_double(s, "waypoint_tolerance_m", waypoint_tolerance_m);
+    const std::string order = cfg.read_string(s, "visit_order", coverage ? "coverage" : "shuffled");
+    if (order != "shuffled" && order != "coverage")
+        throw std::invalid_argument("[" + s + "] visit_order: '" + order + "' is not 'shuffled' or 'coverage'");
+    coverage = order == "coverage";
+    coverage_part_m = cfg.read_double(s, "coverage_part_m", coverage_part_m);
+    if (!(coverage_part_m > 0)) throw std::invalid_argument("[" + s + "] coverage_part_m must be > 0");
     if (!(robot_radius_m >= 0) || !(clearance_m >= 0))
         throw std::invalid_argument("[" + s + "] robot_radius_m and clearance_m must be >= 0");
     if (!(speed_min_mps > 0) || !(speed_max_mps >= speed_min_mps))
@@ -59,19 +65,44 @@ void TrajectoryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, 
     if (!(waypoint_tolerance_m > 0)) throw std::invalid_argument("[" + s + "] waypoint_tolerance_m must be > 0");
 }
 
-std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms) {
+std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms, double part_m) {
     const auto dist = clearance(cspace);
-    std::map<int, std::pair<float, std::size_t>> best;  // room/block id -> (clearance, cell)
     const int block = std::max(1, static_cast<int>(5.0 / cspace.resolution_m));
+    const auto idAt = [&](int cx, int cy) {
+        return rooms.empty() ? 1 + (cy / block) * (cspace.nx / block + 1) + cx / block
+                             : rooms.roomAt(cspace.centreX(cx), cspace.centreY(cy));
+    };
+    // Cell bounds of every room, to cut it into parts of about part_m x part_m.
+    struct Bounds { int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1; };
+    std::map<int, Bounds> bounds;
+    if (part_m > 0)
+        for (int cy = 0; cy < cspace.ny; ++cy)
+            for (int cx = 0; cx < cspace.nx; ++cx)
+                if (const int id = idAt(cx, cy); id > 0) {
+                    Bounds& b = bounds[id];
+                    b.x0 = std::min(b.x0, cx), b.x1 = std::max(b.x1, cx), b.y0 = std::min(b.y0, cy), b.y1 = std::max(b.y1, cy);
+                }
+    const auto partOf = [&](int id, int cx, int cy) {
+        if (part_m <= 0) return 0;
+        const Bounds& b = bounds.at(id);
+        const auto cut = [&](int c, int c0, int c1) {
+            const double len_m = (c1 - c0 + 1) * cspace.resolution_m;
+            // at most 2 parts per side: a corridor is driven along anyway
+            const int n = std::clamp(static_cast<int>(std::lround(len_m / part_m)), 1, 2);
+            return std::min(n - 1, (c - c0) * n / (c1 - c0 + 1));
+        };
+        return cut(cx, b.x0, b.x1) * 1000 + cut(cy, b.y0, b.y1);
+    };
+    std::map<std::pair<int, int>, std::pair<float, std::size_t>> best;  // (room, part) -> (clearance, cell)
     for (int cy = 0; cy < cspace.ny; ++cy)
         for (int cx = 0; cx < cspace.nx; ++cx) {
             const std::size_t i = static_cast<std::size_t>(cy) * cspace.nx + cx;
             if (dist[i] <= 0) continue;
-            const int id = rooms.empty() ? 1 + (cy / block) * (cspace.nx / block + 1) + cx / block
-                                         : rooms.roomAt(cspace.centreX(cx), cspace.centreY(cy));
+            const int id = idAt(cx, cy);
             if (id <= 0) continue;
-            auto it = best.find(id);
-            if (it == best.end() || dist[i] > it->second.first) best[id] = {dist[i], i};
+            const std::pair<int, int> key{id, partOf(id, cx, cy)};
+            auto it = best.find(key);
+            if (it == best.end() || dist[i] > it->second.first) best[key] = {dist[i], i};
         }
     std::vector<Eigen::Vector2d> goals;
     for (const auto& [id, b] : best) {
@@ -86,7 +117,7 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
                                                   double duration_s, Rng& rng) {
     if (!(dt_s > 0) || !(duration_s >= 0)) throw std::invalid_argument("generateTrajectory: dt must be > 0, duration >= 0");
     const Raster cspace = inflate(obstacles, p.robot_radius_m + p.clearance_m);
-    std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms);
+    std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms, p.coverage ? p.coverage_part_m : 0.0);
     if (goals.empty())
         throw std::runtime_error("generateTrajectory: no free space for a robot of radius " +
                                  std::to_string(p.robot_radius_m) + " m in the map");
@@ -106,6 +137,13 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
                 for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
                 for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
                 order_pos = 0;
+            }
+            if (p.coverage) {  // the nearest goal of this round next (straight-line distance)
+                const Eigen::Vector2d here(d.pose.x, d.pose.y);
+                const auto nearest = std::min_element(
+                    order.begin() + static_cast<std::ptrdiff_t>(order_pos), order.end(),
+                    [&](std::size_t a, std::size_t b) { return (goals[a] - here).norm() < (goals[b] - here).norm(); });
+                std::iter_swap(order.begin() + static_cast<std::ptrdiff_t>(order_pos), nearest);
             }
             const Eigen::Vector2d goal = goals[order[order_pos++]];
             const auto from = nearestFree(cspace, {d.pose.x, d.pose.y}, 0.6);
@@ -133,7 +171,8 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
             while (d.next < d.waypoints.size() &&
                    (d.waypoints[d.next] - Eigen::Vector2d(d.pose.x, d.pose.y)).norm() < p.waypoint_tolerance_m) {
                 ++d.next;
-                if (d.next == d.waypoints.size() && rng.bernoulli(p.spin_probability)) d.spin_left_rad = 2 * M_PI;
+                if (d.next == d.waypoints.size() && (rng.bernoulli(p.spin_probability) || p.coverage))
+                    d.spin_left_rad = 2 * M_PI;
             }
             if (d.next >= d.waypoints.size() && d.spin_left_rad <= 0 && failures < 3) {
                 if (!newLeg()) ++failures;  // nowhere to go: stand still

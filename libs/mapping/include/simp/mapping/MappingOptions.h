@@ -38,6 +38,9 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double tau_cost = 0.3;           ///< merge when C < tau_cost; authors' costTH
     double tau_purge = 0.5;          ///< purge when n_match / n_skip < tau_purge (empirical, paper)
     int min_local_detections = 1;    ///< a local object needs this many detections to be integrated; authors' totalSeenTH
+    /// A local object needs at least this many detections per time step of its window (authors'
+    /// purgeDetections: times_matched >= 0.3 detc_cnt): one-off detections never reach the map. 0 = off.
+    double min_local_support = 0.3;
     /// Project addition: after each integration, pairs of same-class objects (of the local map,
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.

@@ -108,6 +108,9 @@ class ObjectMapBuilder {
     std::set<std::int64_t> m_window_active;     ///< map ids active in some frame of the window
     std::set<std::int64_t> m_window_candidates; ///< map ids visible in some frame of the window
     std::optional<mrpt::poses::CPose3D> m_window_start;  ///< robot pose when m^_g was started
+    std::size_t m_window_steps = 0;  ///< time steps (robot pose or stamp changed) in the window
+    /// Stamp and robot pose of the last inserted frame.
+    std::optional<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose3D>> m_last_step;
     std::int64_t m_next_id = 1;
 
     WallGrid m_walls;

@@ -49,7 +49,7 @@ struct DetectorParams {
     double size_std_fraction = 0.1;        ///< relative std of each box dimension
     double yaw_std_rad = 0.1;              ///< std of the box yaw (rad)
     double wrong_class_probability = 0.03; ///< a true detection gets another class label
-    double confidence_true_mean = 0.85, confidence_true_std = 0.08;   ///< score of true detections
+    double confidence_true_mean = 0.93, confidence_true_std = 0.05;   ///< score of true detections
     double confidence_false_mean = 0.55, confidence_false_std = 0.12; ///< score of false ones
     double min_confidence = 0.3;           ///< detections scoring below are not reported
     /// Centre noise structure (doc/simulator.md "Detection noise"): the class model holds at this

@@ -2,7 +2,7 @@
 /// \file SimApp.h
 /// The logic of the `simp-sim` program (apps/simp-sim is a try/catch around it):
 ///   simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]
-///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F]
+///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]
 
 #include <cstdint>
 #include <optional>
@@ -28,6 +28,7 @@ class SimApp {
     std::uint64_t seed = 0;
     bool seed_given = false;
     std::optional<double> size_m2, duration_s, changes;
+    bool coverage = false;  ///< --coverage
     std::optional<int> rooms;
 };
 

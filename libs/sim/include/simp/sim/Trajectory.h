@@ -25,13 +25,20 @@ struct TrajectoryParams {
     double turn_in_place_rad = 0.5;    ///< heading error above which the robot stops and turns (rad)
     double spin_probability = 0.3;     ///< probability of a full turn on the spot at a room goal
     double waypoint_tolerance_m = 0.1; ///< waypoint reached within this distance (m)
+    /// Order of the room goals in each round: false = shuffled (a robot going about its errands),
+    /// true = coverage (the nearest goal not yet visited this round, a full turn at every goal):
+    /// a mapping run that sees every room in the shortest time.
+    bool coverage = false;
+    /// In coverage, every room is cut into parts of about this size (m, at most 2 x 2) with a goal each.
+    double coverage_part_m = 3.0;
 
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
 /// Room goals: for every room id of `rooms` (or, without a room map, for free cells spread
-/// over the map), the free cell of `cspace` farthest from obstacles (m, world frame).
-std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms);
+/// over the map), the free cell of `cspace` farthest from obstacles (m, world frame). With
+/// part_m > 0, every room's bounding box is cut into about part_m x part_m parts, one goal each.
+std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms, double part_m = 0.0);
 
 /// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
 /// poses). `obstacles` = walls and object footprints of the world the robot drives in.
