@@ -139,6 +139,7 @@ void DemoApp::run(std::ostream& out) {
     out << "[2/5] Simulating a mapping run (" << options.mapping_duration_s << " s) and building the object map\n";
     sim::SimParams mapping_run;
     mapping_run.duration_s = options.mapping_duration_s;
+    mapping_run.trajectory.coverage = true;  // a mapping run visits every room
     mapping_run.progress = false;
     const std::string mapping_seq = (root / "mapping_run").string();
     sim::simulateSequence(truth, mapping_run, options.seed + 1000, mapping_seq);

@@ -19,7 +19,7 @@ struct DemoOptions {
     std::string out_dir = "demo_out";              ///< everything is written here
     std::uint64_t seed = 1;                        ///< world, sequences and filters derive their seeds from it
     int rooms = 10;                                ///< size of the built-in office
-    double mapping_duration_s = 600;               ///< simulated time of the mapping run (s); 600 s covers every room of the default office
+    double mapping_duration_s = 600;               ///< simulated time of the mapping run (s, a coverage run); 600 s covers every room of the default office
     double localization_duration_s = 90;           ///< simulated time of each localization run (s)
     std::vector<double> changes = {0.0, 0.15, 0.3};  ///< long-term change fraction of each localization run
     int particles = 5000;                          ///< MCL particles (paper: 5000)
