@@ -25,12 +25,7 @@ Scene officeScene(int rooms, std::uint64_t seed) {
     p.rooms = rooms;
     p.size_m2 = 0;
     Scene s{generateOfficeWithLayout(p, seed), {}};
-    s.obstacles = wallRaster(s.office.world.floorplan);
-    std::vector<simp::world::MapObject> solid;
-    const int door = s.office.world.objects.classId("door");
-    for (const auto& o : s.office.world.objects.objects)
-        if (o.class_id != door) solid.push_back(o);
-    addFootprints(s.obstacles, solid);
+    s.obstacles = drivingObstacles(s.office.world);
     return s;
 }
 

@@ -57,13 +57,7 @@ void checkOffice(const simp::sim::GeneratedOffice& g) {
     for (const auto& r : g.layout.rooms) EXPECT_TRUE(reached.count(r.id)) << "room " << r.id << " is not connected";
 
     // the robot (radius 0.3 m) can reach every room's goal from the corridor around the furniture
-    auto obstacles = walls;
-    std::vector<simp::world::MapObject> solid;
-    const int door = w.objects.classId("door");
-    for (const auto& o : w.objects.objects)
-        if (o.class_id != door) solid.push_back(o);
-    simp::sim::addFootprints(obstacles, solid);
-    const auto cspace = simp::sim::inflate(obstacles, 0.3);
+    const auto cspace = simp::sim::inflate(simp::sim::drivingObstacles(w), 0.3);
     const auto goals = simp::sim::roomGoals(cspace, w.rooms);
     EXPECT_EQ(goals.size(), g.layout.rooms.size());
     ASSERT_FALSE(goals.empty());

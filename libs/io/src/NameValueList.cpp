@@ -5,29 +5,27 @@
 #include <stdexcept>
 
 namespace simp::io {
-namespace {
 
-std::string trim(const std::string& s) {
+std::string trimIniValue(const std::string& s) {
     const auto b = s.find_first_not_of(" \t\r\n\"");
     if (b == std::string::npos) return {};
     const auto e = s.find_last_not_of(" \t\r\n\"");
     return s.substr(b, e - b + 1);
 }
 
-}  // namespace
 
 std::vector<std::pair<std::string, double>> parseNameValueList(const std::string& text, const std::string& where) {
     std::vector<std::pair<std::string, double>> out;
     std::stringstream ss(text);
     std::string item;
     while (std::getline(ss, item, ',')) {
-        const std::string entry = trim(item);
+        const std::string entry = trimIniValue(item);
         if (entry.empty()) continue;
         const auto colon = entry.rfind(':');
         if (colon == std::string::npos)
             throw std::invalid_argument(where + ": entry '" + entry + "' is not of the form name:value");
-        const std::string name = trim(entry.substr(0, colon));
-        const std::string value_text = trim(entry.substr(colon + 1));
+        const std::string name = trimIniValue(entry.substr(0, colon));
+        const std::string value_text = trimIniValue(entry.substr(colon + 1));
         if (name.empty()) throw std::invalid_argument(where + ": entry '" + entry + "' has an empty class name");
         double value = 0;
         try {

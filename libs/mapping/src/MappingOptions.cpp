@@ -11,12 +11,7 @@
 namespace simp::mapping {
 namespace {
 
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\n\"");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t\r\n\"");
-    return s.substr(b, e - b + 1);
-}
+using io::trimIniValue;
 
 void requireFinite(double v, const char* name) {
     if (!std::isfinite(v)) throw std::invalid_argument(std::string("mapping option '") + name + "' is not a finite number");
@@ -33,12 +28,12 @@ void requireRange(double v, double lo, double hi, const char* name) {
 
 /// Reads a double key; absent keeps `value`; non-numeric text throws naming the key.
 void readDouble(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, double& value) {
-    const std::string text = trim(c.read_string(section, key, "", false));
+    const std::string text = trimIniValue(c.read_string(section, key, "", false));
     if (text.empty()) return;
     try {
         std::size_t used = 0;
         const double v = std::stod(text, &used);
-        if (trim(text.substr(used)).size() != 0) throw std::invalid_argument("trailing text");
+        if (trimIniValue(text.substr(used)).size() != 0) throw std::invalid_argument("trailing text");
         value = v;
     } catch (const std::exception&) {
         throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "' is not a number");
@@ -53,7 +48,7 @@ void readInt(const mrpt::config::CConfigFileBase& c, const std::string& section,
 }
 
 void readBool(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, bool& value) {
-    const std::string text = trim(c.read_string(section, key, "", false));
+    const std::string text = trimIniValue(c.read_string(section, key, "", false));
     if (text == "true" || text == "1") value = true;
     else if (text == "false" || text == "0") value = false;
     else if (!text.empty())
@@ -110,7 +105,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     {
         const std::string key = "class_duplicate_center_radius_m";
         const std::string text = c.read_string(s, key, "", false);
-        if (!trim(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
+        if (!trimIniValue(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
     }
     readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
     readDouble(c, s, "cost_covariance_scale", cost_covariance_scale);
@@ -133,7 +128,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "room_min_area_m2", room_min_area_m2);
     readDouble(c, s, "room_search_radius_m", room_search_radius_m);
 
-    const std::string policy = trim(c.read_string(s, "room_update_policy", "", false));
+    const std::string policy = trimIniValue(c.read_string(s, "room_update_policy", "", false));
     if (policy == "current_room") room_policy = RoomUpdatePolicy::CurrentRoom;
     else if (policy == "all") room_policy = RoomUpdatePolicy::All;
     else if (!policy.empty())
@@ -145,7 +140,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
         {"class_max_range_m", &ClassFilter::max_range_m}};
     for (const auto& [key, member] : lists) {
         const std::string text = c.read_string(s, key, "", false);
-        if (trim(text).empty()) continue;
+        if (trimIniValue(text).empty()) continue;
         for (const auto& [name, v] : parseClassValueList(text, key)) {
             auto it = per_class.find(name);
             if (it == per_class.end()) it = per_class.emplace(name, default_filter).first;

@@ -51,6 +51,16 @@ std::vector<float> clearance(const Raster& raster) {
     return out;
 }
 
+Raster drivingObstacles(const world::World& world) {
+    Raster obstacles = wallRaster(world.floorplan);
+    const int door_class = world.objects.classId("door");
+    std::vector<world::MapObject> solid;
+    for (const auto& o : world.objects.objects)
+        if (o.class_id != door_class) solid.push_back(o);
+    addFootprints(obstacles, solid);
+    return obstacles;
+}
+
 Raster inflate(const Raster& raster, double radius_m) {
     const auto d = clearance(raster);
     Raster out = raster;

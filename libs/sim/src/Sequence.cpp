@@ -68,16 +68,9 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     // the world of this sequence (long-term change) and what the robot must drive around
     const world::World w = applyChanges(map_world, params.changes, rng_changes, &summary.changes);
     const auto& names = w.objects.class_names;
-    const int door_class = w.objects.classId("door");
     const int person_class = w.objects.classId("person");
     const Raster walls = wallRaster(w.floorplan);
-    Raster obstacles = walls;
-    {
-        std::vector<world::MapObject> solid;
-        for (const auto& o : w.objects.objects)
-            if (o.class_id != door_class) solid.push_back(o);
-        addFootprints(obstacles, solid);
-    }
+    const Raster obstacles = drivingObstacles(w);
 
     const double dt = 1.0 / params.odometry.rate_hz;
     const auto traj = generateTrajectory(obstacles, w.rooms, params.trajectory, params.epoch_s, dt, params.duration_s, rng_traj);

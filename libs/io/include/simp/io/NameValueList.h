@@ -9,6 +9,9 @@
 
 namespace simp::io {
 
+/// `s` without surrounding blanks and double quotes (how the .ini values are compared).
+std::string trimIniValue(const std::string& s);
+
 /// The entries of `text` in order (a name may repeat; callers decide). Values are finite numbers.
 /// \throw std::invalid_argument starting with `where` and naming the entry when it has no ':',
 ///        an empty name, or a value that is not a finite number.

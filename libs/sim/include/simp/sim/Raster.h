@@ -5,6 +5,7 @@
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <simp/world/MapObject.h>
+#include <simp/world/World.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -35,6 +36,10 @@ Raster wallRaster(const mrpt::maps::COccupancyGridMap2D& grid);
 
 /// Marks the ground footprints of `objects` blocked (cells whose centre lies inside).
 void addFootprints(Raster& raster, const std::vector<world::MapObject>& objects);
+
+/// What a robot drives around in `world`: its walls and the footprints of every object but the
+/// doors (a door object stands in an open gap).
+Raster drivingObstacles(const world::World& world);
 
 /// The raster with every cell closer than `radius_m` to a blocked cell blocked too
 /// (configuration space of a disc robot).
