@@ -70,6 +70,53 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("class_duplicate_center_radius_m = sofa:-1", "sofa");
     expectThrowNaming("min_local_support = -0.3", "min_local_support");
     expectThrowNaming("min_local_support = often", "min_local_support");
+    expectThrowNaming("min_confirmed_matches = 0", "min_confirmed_matches");
+    expectThrowNaming("min_confirmed_matches = 2.5", "min_confirmed_matches");
+    expectThrowNaming("wall_align = maybe", "wall_align");
+    expectThrowNaming("class_wall_align_max_gap_m = board", "class_wall_align_max_gap_m");
+    expectThrowNaming("class_wall_align_max_gap_m = board:-0.1", "board");
+    expectThrowNaming("wall_align_rays = 1", "wall_align_rays");
+    expectThrowNaming("wall_align_max_yaw_rad = 2", "wall_align_max_yaw_rad");
+    expectThrowNaming("wall_align_max_penetration_m = nan", "wall_align_max_penetration_m");
+    expectThrowNaming("wall_align_max_residual_m = -1", "wall_align_max_residual_m");
+}
+
+TEST(MappingOptions, WallAlignmentAndConfirmationKeys) {
+    const MappingOptions defaults;
+    EXPECT_TRUE(defaults.wall_align);
+    EXPECT_EQ(defaults.min_confirmed_matches, 3);
+    ASSERT_TRUE(defaults.wallAlignmentOf("board").has_value());
+    EXPECT_DOUBLE_EQ(defaults.wallAlignmentOf("board")->max_gap_m, 0.3);
+    EXPECT_FALSE(defaults.wallAlignmentOf("potted plant").has_value());  // plants stand free
+    mrpt::config::CConfigFileMemory ini(
+        "[mapping]\n"
+        "min_confirmed_matches = 5\n"
+        "class_wall_align_max_gap_m = board:0.2, potted plant:0.1\n"
+        "wall_align_max_penetration_m = 0.15\n"
+        "wall_align_max_yaw_rad = 0.1\n"
+        "wall_align_max_residual_m = 0.05\n"
+        "wall_align_rays = 7\n");
+    MappingOptions o;
+    o.loadFromConfigFile(ini, "mapping");
+    EXPECT_EQ(o.min_confirmed_matches, 5);
+    const auto board = o.wallAlignmentOf("board");
+    ASSERT_TRUE(board.has_value());
+    EXPECT_DOUBLE_EQ(board->max_gap_m, 0.2);
+    EXPECT_DOUBLE_EQ(board->max_penetration_m, 0.15);
+    EXPECT_DOUBLE_EQ(board->max_yaw_rad, 0.1);
+    EXPECT_DOUBLE_EQ(board->max_residual_m, 0.05);
+    EXPECT_EQ(board->rays_per_side, 7);
+    EXPECT_TRUE(o.wallAlignmentOf("potted plant").has_value());
+    EXPECT_FALSE(o.wallAlignmentOf("cabinet").has_value());  // the list replaces the default list
+    // An empty list aligns no class; wall_align = false switches the prior off.
+    mrpt::config::CConfigFileMemory none("[mapping]\nclass_wall_align_max_gap_m =\n");
+    MappingOptions n;
+    n.loadFromConfigFile(none, "mapping");
+    EXPECT_FALSE(n.wallAlignmentOf("board").has_value());
+    mrpt::config::CConfigFileMemory off("[mapping]\nwall_align = false\n");
+    MappingOptions f;
+    f.loadFromConfigFile(off, "mapping");
+    EXPECT_FALSE(f.wallAlignmentOf("board").has_value());
 }
 
 TEST(MappingOptions, DuplicateRulesLoadWithPerClassRadius) {

@@ -8,6 +8,7 @@
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/mapping/ObjectMapBuilder.h>
 
 #include "TestMaps.h"
 
@@ -266,9 +267,18 @@ TEST(CObjectMap, InsertObservationBuildsTheMapWithLibsMapping) {
     EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
     ASSERT_NE(map.mapBuilder(), nullptr);
     map.flushInsertions();  // integrate the local map now (no d_xy / d_theta motion happened)
-    ASSERT_EQ(map.size(), 2u);
-    for (const auto& obj : map.data().objects) {
-        const auto& name = map.data().class_names.at(static_cast<std::size_t>(obj.class_id));
+    // Two detections each: tentative objects (min_confirmed_matches = 3), not yet map content.
+    EXPECT_EQ(map.mapBuilder()->map().objects.size(), 2u);
+    EXPECT_EQ(map.size(), 0u);
+    // Confirmed from two detections on: the same insertions make the map content.
+    CObjectMap map2;
+    map2.insertionOptions.mapping.min_confirmed_matches = 2;
+    EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
+    EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
+    map2.flushInsertions();
+    ASSERT_EQ(map2.size(), 2u);
+    for (const auto& obj : map2.data().objects) {
+        const auto& name = map2.data().class_names.at(static_cast<std::size_t>(obj.class_id));
         const auto& expected = gt.objects[name == "table" ? 1 : 2].box;
         EXPECT_LT((obj.box.center - expected.center).norm(), 1e-6) << name;
         EXPECT_EQ(obj.n_match, 2) << name;

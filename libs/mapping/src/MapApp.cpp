@@ -145,7 +145,7 @@ void MapApp::run() {
     world::World result;
     result.floorplan = w.floorplan;
     result.rooms = m_builder.rooms();
-    result.objects = m_builder.map();
+    result.objects = m_builder.confirmedMap();
     world::saveWorld(result, m_args.out_dir);
     writeObjectMapPng(result.floorplan, result.objects, (fs::path(m_args.out_dir) / "map.png").string());
 

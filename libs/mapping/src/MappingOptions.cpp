@@ -90,6 +90,18 @@ double MappingOptions::duplicateCenterRadiusOf(const std::string& class_name) co
     return it == class_duplicate_center_radius_m.end() ? duplicate_center_radius_m : it->second;
 }
 
+std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::string& class_name) const {
+    const auto it = class_wall_align_max_gap_m.find(class_name);
+    if (!wall_align || it == class_wall_align_max_gap_m.end()) return std::nullopt;
+    WallAlignmentParams p;
+    p.max_gap_m = it->second;
+    p.max_penetration_m = wall_align_max_penetration_m;
+    p.max_yaw_rad = wall_align_max_yaw_rad;
+    p.max_residual_m = wall_align_max_residual_m;
+    p.rays_per_side = wall_align_rays;
+    return p;
+}
+
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
     readDouble(c, s, "trigger_dist_m", trigger_dist_m);
     readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
@@ -97,6 +109,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "tau_purge", tau_purge);
     readInt(c, s, "min_local_detections", min_local_detections);
     readDouble(c, s, "min_local_support", min_local_support);
+    readInt(c, s, "min_confirmed_matches", min_confirmed_matches);
     readBool(c, s, "merge_duplicates", merge_duplicates);
     readDouble(c, s, "duplicate_tau_cost", duplicate_tau_cost);
     readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
@@ -107,6 +120,20 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
         const std::string text = c.read_string(s, key, "", false);
         if (!trimIniValue(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
     }
+    readBool(c, s, "wall_align", wall_align);
+    {
+        // An explicit (even empty) list replaces the default: "class_wall_align_max_gap_m = " aligns no class.
+        const std::string key = "class_wall_align_max_gap_m";
+        const std::string raw = c.read_string(s, key, "<absent>", false);
+        if (raw != "<absent>") {
+            const std::string text = trimIniValue(raw);
+            class_wall_align_max_gap_m = text.empty() ? std::map<std::string, double>{} : parseClassValueList(text, key);
+        }
+    }
+    readDouble(c, s, "wall_align_max_penetration_m", wall_align_max_penetration_m);
+    readDouble(c, s, "wall_align_max_yaw_rad", wall_align_max_yaw_rad);
+    readDouble(c, s, "wall_align_max_residual_m", wall_align_max_residual_m);
+    readInt(c, s, "wall_align_rays", wall_align_rays);
     readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
     readDouble(c, s, "cost_covariance_scale", cost_covariance_scale);
     readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
@@ -157,12 +184,19 @@ void MappingOptions::validate() const {
     requireRange(tau_purge, 0.0, 1e6, "tau_purge");
     requireRange(min_local_detections, 1, 1e6, "min_local_detections");
     requireRange(min_local_support, 0.0, 1e3, "min_local_support");
+    requireRange(min_confirmed_matches, 1, 1e6, "min_confirmed_matches");
     requireRange(duplicate_tau_cost, 0.0, 1.0, "duplicate_tau_cost");
     requireRange(duplicate_max_distance_m, 0.0, 1e3, "duplicate_max_distance_m");
     requireRange(duplicate_center_radius_m, 0.0, 1e3, "duplicate_center_radius_m");
     requireRange(duplicate_min_overlap, 0.0, 1.0, "duplicate_min_overlap");
     for (const auto& [name, r] : class_duplicate_center_radius_m)
         requireRange(r, 0.0, 1e3, ("class_duplicate_center_radius_m of class '" + name + "'").c_str());
+    for (const auto& [name, g] : class_wall_align_max_gap_m)
+        requireRange(g, 0.0, 10.0, ("class_wall_align_max_gap_m of class '" + name + "'").c_str());
+    requireRange(wall_align_max_penetration_m, 0.0, 10.0, "wall_align_max_penetration_m");
+    requireRange(wall_align_max_yaw_rad, 0.0, 1.5, "wall_align_max_yaw_rad");
+    requireRange(wall_align_max_residual_m, 0.0, 10.0, "wall_align_max_residual_m");
+    requireRange(wall_align_rays, 2, 100, "wall_align_rays");
     requireRange(default_noise_sigma_m, 1e-6, 1e3, "default_noise_sigma_m");
     requireRange(cost_covariance_scale, 1e-6, 1e6, "cost_covariance_scale");
     requireRange(truncation_threshold, 0.0, 1.0, "truncation_threshold");
@@ -196,6 +230,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "tau_purge             = " << tau_purge << "\n";
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "min_local_support     = " << min_local_support << " detections per time step\n";
+    o << "min_confirmed_matches = " << min_confirmed_matches << " detections\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
     o << "duplicate_tau_cost    = " << duplicate_tau_cost << "\n";
     o << "duplicate_max_distance_m = " << duplicate_max_distance_m << " m\n";
@@ -203,6 +238,10 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "duplicate_center_radius_m = " << duplicate_center_radius_m << " m";
     for (const auto& [name, r] : class_duplicate_center_radius_m) o << ", " << name << ": " << r << " m";
     o << "\n";
+    o << "wall_align            = " << (wall_align ? "true" : "false") << ", max gap per class:";
+    for (const auto& [name, g] : class_wall_align_max_gap_m) o << " " << name << ": " << g << " m,";
+    o << " penetration <= " << wall_align_max_penetration_m << " m, yaw <= " << wall_align_max_yaw_rad
+      << " rad, residual <= " << wall_align_max_residual_m << " m, " << wall_align_rays << " rays per side\n";
     o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
     o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
     o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";

@@ -9,6 +9,7 @@
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/mapping/RoomSegmentation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,6 +60,14 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_window_steps = 0;
     m_last_step.reset();
     m_groups_valid = false;
+}
+
+world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
+    world::ObjectMapData out = m_g;
+    out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(),
+                                     [&](const world::MapObject& o) { return o.n_match < m_options.min_confirmed_matches; }),
+                      out.objects.end());
+    return out;
 }
 
 int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
@@ -152,6 +161,7 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
 
     const int current_room =
         m_options.room_policy == RoomUpdatePolicy::All ? 0 : roomOf(robot_pose.x(), robot_pose.y());
+    m_window_room = current_room;
 
     // I_active of the map objects for this camera, accumulated over the window.
     const PinholeCamera camera = cameraOf(obs, robot_pose);

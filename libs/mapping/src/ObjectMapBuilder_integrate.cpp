@@ -151,6 +151,17 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
     return n_removed;
 }
 
+geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D& box) const {
+    if (m_walls.empty() || class_id < 0 || static_cast<std::size_t>(class_id) >= m_g.class_names.size()) return box;
+    const auto params = m_options.wallAlignmentOf(m_g.class_names[static_cast<std::size_t>(class_id)]);
+    return params ? alignToWalls(box, m_walls, *params) : box;
+}
+
+void ObjectMapBuilder::alignToFloorPlan(world::MapObject& o) const {
+    o.box = alignedBox(o.class_id, o.box);
+    o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+}
+
 void ObjectMapBuilder::flush() {
     m_window_start.reset();
     const double window_steps = static_cast<double>(m_window_steps);
@@ -161,6 +172,8 @@ void ObjectMapBuilder::flush() {
     }
     ++m_stats.integrations;
     if (m_options.merge_duplicates) mergeLocalDuplicates();
+    // Floor-plan prior on the local map too, so that association compares like with like.
+    for (auto& l : m_local) l.box = alignedBox(l.class_id, l.box);
 
     std::unordered_map<std::int64_t, std::size_t> index_of;
     for (std::size_t k = 0; k < m_g.objects.size(); ++k) index_of[m_g.objects[k].id] = k;
@@ -228,9 +241,18 @@ void ObjectMapBuilder::flush() {
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
+    // Floor-plan prior: objects updated in this window stand flush against their wall.
+    for (auto& o : added) matched.insert(o.id);
+    for (auto& o : m_g.objects)
+        if (matched.count(o.id)) alignToFloorPlan(o);
     if (m_options.merge_duplicates) {
+        // As the authors' mergeObjects: every object of the robot's room (all objects without a
+        // room filter), not only those seen now, so twins left by earlier windows still merge.
         std::set<std::int64_t> seen(m_window_candidates.begin(), m_window_candidates.end());
         for (const auto& o : added) seen.insert(o.id);
+        const bool all_rooms = m_options.room_policy == RoomUpdatePolicy::All;
+        for (const auto& o : m_g.objects)
+            if (all_rooms || (m_window_room != 0 && o.room_id == m_window_room)) seen.insert(o.id);
         m_stats.duplicates_merged += mergeMapDuplicates(seen);
     }
 

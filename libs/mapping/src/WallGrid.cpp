@@ -9,9 +9,21 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
     : m_x_min(grid.getXMin()), m_y_min(grid.getYMin()), m_res(grid.getResolution()) {
     const int nx = static_cast<int>(grid.getSizeX()), ny = static_cast<int>(grid.getSizeY());
     m_wall = cv::Mat1b::zeros(ny, nx);
+    m_free = cv::Mat1b::zeros(ny, nx);
     for (int cy = 0; cy < ny; ++cy)
-        for (int cx = 0; cx < nx; ++cx)
-            if (grid.getCell(cx, cy) < max_free_prob_of_wall) m_wall(cy, cx) = 255;
+        for (int cx = 0; cx < nx; ++cx) {
+            const float p_free = grid.getCell(cx, cy);
+            if (p_free < max_free_prob_of_wall) m_wall(cy, cx) = 255;
+            else if (p_free > 1.0 - max_free_prob_of_wall) m_free(cy, cx) = 255;
+        }
+}
+
+bool WallGrid::isFree(double x_m, double y_m) const {
+    if (m_free.empty()) return false;
+    const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
+    const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
+    if (cx < 0 || cy < 0 || cx >= m_free.cols || cy >= m_free.rows) return false;
+    return m_free(cy, cx) != 0;
 }
 
 bool WallGrid::isWall(double x_m, double y_m) const {

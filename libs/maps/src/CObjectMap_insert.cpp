@@ -26,7 +26,7 @@ void CObjectMap::flushInsertions() {
 }
 
 void CObjectMap::syncFromBuilder() {
-    const auto& built = m_builder->map();
+    const simp::world::ObjectMapData built = m_builder->confirmedMap();
     const bool changed = built.objects.size() != m_data.objects.size() ||
                          built.class_names.size() != m_data.class_names.size() ||
                          m_builder->stats().integrations > 0;

@@ -29,6 +29,38 @@ std::optional<Eigen::Vector2d> nearestFree(const Raster& cspace, const Eigen::Ve
     return best;
 }
 
+/// Cells (index cy * nx + cx) of the largest 4-connected component of cells with clearance > 0:
+/// the free space the robot can drive in (pockets walled in by furniture are left out).
+std::vector<std::uint8_t> largestFreeComponent(const Raster& cspace, const std::vector<float>& dist) {
+    std::vector<int> label(dist.size(), 0);
+    std::vector<std::size_t> stack;
+    int best_label = 0;
+    std::size_t best_size = 0;
+    int next = 0;
+    for (std::size_t seed = 0; seed < dist.size(); ++seed) {
+        if (dist[seed] <= 0 || label[seed] != 0) continue;
+        label[seed] = ++next;
+        std::size_t size = 0;
+        stack.assign(1, seed);
+        while (!stack.empty()) {
+            const std::size_t i = stack.back();
+            stack.pop_back();
+            ++size;
+            const int cx = static_cast<int>(i % cspace.nx), cy = static_cast<int>(i / cspace.nx);
+            const int nb[4][2] = {{cx + 1, cy}, {cx - 1, cy}, {cx, cy + 1}, {cx, cy - 1}};
+            for (const auto& q : nb) {
+                if (!cspace.inside(q[0], q[1])) continue;
+                const std::size_t j = static_cast<std::size_t>(q[1]) * cspace.nx + q[0];
+                if (dist[j] > 0 && label[j] == 0) label[j] = next, stack.push_back(j);
+            }
+        }
+        if (size > best_size) best_size = size, best_label = next;
+    }
+    std::vector<std::uint8_t> in(dist.size(), 0);
+    for (std::size_t i = 0; i < dist.size(); ++i) in[i] = label[i] == best_label && best_label != 0;
+    return in;
+}
+
 /// Unicycle state and the current plan.
 struct Driver {
     mrpt::math::TPose2D pose;
@@ -67,6 +99,9 @@ void TrajectoryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, 
 
 std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms, double part_m) {
     const auto dist = clearance(cspace);
+    // Goals only where the robot can drive: the max-clearance cell of a part may lie in a pocket
+    // closed off by furniture, and an unreachable goal leaves its room unvisited.
+    const auto reachable = largestFreeComponent(cspace, dist);
     const int block = std::max(1, static_cast<int>(5.0 / cspace.resolution_m));
     const auto idAt = [&](int cx, int cy) {
         return rooms.empty() ? 1 + (cy / block) * (cspace.nx / block + 1) + cx / block
@@ -97,7 +132,7 @@ std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMa
     for (int cy = 0; cy < cspace.ny; ++cy)
         for (int cx = 0; cx < cspace.nx; ++cx) {
             const std::size_t i = static_cast<std::size_t>(cy) * cspace.nx + cx;
-            if (dist[i] <= 0) continue;
+            if (dist[i] <= 0 || !reachable[i]) continue;
             const int id = idAt(cx, cy);
             if (id <= 0) continue;
             const std::pair<int, int> key{id, partOf(id, cx, cy)};

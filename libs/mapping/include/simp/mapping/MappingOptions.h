@@ -5,8 +5,10 @@
 /// each key, its unit and its source).
 
 #include <mrpt/config/CLoadableOptions.h>
+#include <simp/mapping/WallAlignment.h>
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace simp::mapping {
@@ -41,6 +43,11 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// A local object needs at least this many detections per time step of its window (authors'
     /// purgeDetections: times_matched >= 0.3 detc_cnt): one-off detections never reach the map. 0 = off.
     double min_local_support = 0.3;
+    /// Track confirmation (project addition): a map object enters the output map (simp-map's
+    /// world, CObjectMap's content) once it aggregates this many detections; until then it is
+    /// tentative, kept by the builder to gather matches. One-off stray detections that no later
+    /// window re-observes (an object never active again is never purged) stay out. 1 = off.
+    int min_confirmed_matches = 3;
     /// Project addition: after each integration, pairs of same-class objects (of the local map,
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.
@@ -75,6 +82,24 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// equivalent box frames an object has).
     bool cost_uses_noise_mean = false;
     double default_noise_sigma_m = 0.2;  ///< isotropic sigma (m, b = 2) of C_cen for classes without a noise model
+    /// @}
+
+    /// @name Floor-plan prior (project addition, doc/mapping.md "Wall alignment"): after each
+    /// integration, a map object of a listed class with a side parallel to a floor-plan wall, at
+    /// most max_gap in front of it or wall_align_max_penetration_m inside, is turned parallel and
+    /// moved flush against it (alignToWalls).
+    /// @{
+    bool wall_align = true;
+    /// Per class: the largest gap side -> wall face that is closed (m); classes not listed are never aligned.
+    std::map<std::string, double> class_wall_align_max_gap_m{
+        {"sink", 0.3},    {"oven", 0.3},    {"board", 0.3}, {"drawers", 0.3}, {"sofa", 0.3},
+        {"cabinet", 0.3}, {"fire extinguisher", 0.3},       {"desk", 0.3},    {"table", 0.3}};
+    double wall_align_max_penetration_m = 0.3;  ///< m
+    double wall_align_max_yaw_rad = 0.2;        ///< rad
+    double wall_align_max_residual_m = 0.1;     ///< m
+    int wall_align_rays = 5;                    ///< rays per side
+    /// The alignment parameters of a class; nullopt when the class is not aligned (or wall_align is off).
+    std::optional<WallAlignmentParams> wallAlignmentOf(const std::string& class_name) const;
     /// @}
 
     /// @name Visibility (I_active)

@@ -66,7 +66,10 @@ class ObjectMapBuilder {
     /// Integrates the pending local map into m_g (no-op when empty).
     void flush();
 
+    /// The whole global map m_g, tentative objects included.
     const world::ObjectMapData& map() const { return m_g; }
+    /// The map to use: m_g without its tentative objects (fewer than min_confirmed_matches detections).
+    world::ObjectMapData confirmedMap() const;
     const std::vector<LocalObject>& localMap() const { return m_local; }
     const world::RoomMap& rooms() const { return m_rooms; }
     const BuilderStats& stats() const { return m_stats; }
@@ -99,6 +102,9 @@ class ObjectMapBuilder {
     double duplicateCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, int class_id,
                          const geometry::Box3D& o2) const;
     void mergeLocalDuplicates();
+    /// The floor-plan prior (MappingOptions wall_align): aligns the object's box to its wall.
+    void alignToFloorPlan(world::MapObject& o) const;
+    geometry::Box3D alignedBox(int class_id, const geometry::Box3D& box) const;
     /// Merges duplicates among the map objects with the given ids; returns how many were removed.
     std::size_t mergeMapDuplicates(const std::set<std::int64_t>& ids);
 
@@ -108,6 +114,7 @@ class ObjectMapBuilder {
     std::set<std::int64_t> m_window_active;     ///< map ids active in some frame of the window
     std::set<std::int64_t> m_window_candidates; ///< map ids visible in some frame of the window
     std::optional<mrpt::poses::CPose3D> m_window_start;  ///< robot pose when m^_g was started
+    int m_window_room = 0;  ///< the robot's room in the window's last frame (0 = unknown / policy all)
     std::size_t m_window_steps = 0;  ///< time steps (robot pose or stamp changed) in the window
     /// Stamp and robot pose of the last inserted frame.
     std::optional<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose3D>> m_last_step;

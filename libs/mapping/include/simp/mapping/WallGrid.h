@@ -21,6 +21,10 @@ class WallGrid {
     /// True when the world point (m) falls in a wall cell (false outside the grid).
     bool isWall(double x_m, double y_m) const;
 
+    /// True when the world point (m) falls in a known free cell (free-probability above
+    /// 1 - max_free_prob_of_wall; false for walls, unknown cells and outside the grid).
+    bool isFree(double x_m, double y_m) const;
+
     /// Distance (m) along the horizontal ray from `origin_m` in direction `dir` (need not be unit;
     /// only xy used) to the boundary of the first wall cell, or +infinity when none within max_dist_m.
     /// A ray starting inside a wall cell returns 0. Amanatides-Woo grid traversal.
@@ -30,6 +34,7 @@ class WallGrid {
 
    private:
     cv::Mat1b m_wall;
+    cv::Mat1b m_free;  ///< 255 = known free space
     double m_x_min = 0, m_y_min = 0, m_res = 0.05;
 };
 
