@@ -171,3 +171,30 @@ TEST(ObjectMapBuilder, TentativeObjectsStayOutOfTheConfirmedMap) {
     b.options() = opts;
     EXPECT_EQ(b.confirmedMap().objects.size(), 1u);
 }
+
+TEST(ObjectMapBuilder, DetectionOutsideTheBuildingIsRejected) {
+    // A depth error puts the cabinet 0.3 m behind the outer wall (unknown cells of the floor
+    // plan); the room lookup's search radius would give it the room in front of the wall.
+    const std::vector<std::string> classes = {"cabinet"};
+    const auto run = [&](double y) {
+        ObjectMapBuilder b(test::testOptions());
+        b.setFloorPlan(kGrid, {});
+        simp::world::ObjectMapData m;
+        m.class_names = classes;
+        m.class_noise.resize(1);
+        b.setMap(m);
+        std::mt19937 rng(9);
+        const std::vector<test::TrueObject> seen = {{0, makeUprightBox({2.0, y, 0.8}, {1.0, 0.45, 1.6}, 0.0)}};
+        const mrpt::poses::CPose3D pose(2.0, 2.0, 0, -M_PI / 2, 0, 0);  // front camera faces the wall
+        for (const auto& o : test::observe(seen, classes, pose, rng, test::DetectionNoise{0, 0, 0})) b.insert(o, pose);
+        b.flush();
+        return b;
+    };
+    const ObjectMapBuilder outside = run(kFaceY0 - 0.3);
+    EXPECT_EQ(outside.stats().detections, 1u);
+    EXPECT_EQ(outside.stats().rejected_outside, 1u);
+    EXPECT_TRUE(outside.map().objects.empty());
+    const ObjectMapBuilder inside = run(kFaceY0 + 0.3);  // the same in front of the wall
+    EXPECT_EQ(inside.stats().rejected_outside, 0u);
+    EXPECT_EQ(inside.map().objects.size(), 1u);
+}

@@ -55,6 +55,30 @@ TEST(SimCoverage, RoomsAreCutIntoAtMostFourParts) {
     }
 }
 
+TEST(SimCoverage, GoalsLieWhereTheRobotCanDrive) {
+    // One room 10 m x 3 m: a pocket x < 3 m closed off by a wall (the most open spot, 1.45 m
+    // from any obstacle), and the drivable rest, 7 m long but only 1.45 m wide.
+    Raster r;
+    r.nx = 200;
+    r.ny = 60;
+    r.resolution_m = 0.05;
+    r.blocked.assign(static_cast<std::size_t>(r.nx * r.ny), 0);
+    for (int cy = 0; cy < r.ny; ++cy)
+        for (int cx = 0; cx < r.nx; ++cx) {
+            const bool border = cx == 0 || cy == 0 || cx == r.nx - 1 || cy == r.ny - 1;
+            const bool closing_wall = cx == 60;
+            const bool narrow = cx > 60 && cy > 30;
+            r.set(cx, cy, border || closing_wall || narrow);
+        }
+    simp::world::RoomMap rooms;
+    rooms.ids = cv::Mat1w(r.ny, r.nx, static_cast<std::uint16_t>(1));
+    rooms.resolution_m = r.resolution_m;
+    const auto goals = roomGoals(r, rooms);
+    ASSERT_EQ(goals.size(), 1u);
+    EXPECT_GT(goals[0].x(), 3.05);  // in the drivable part, not in the pocket
+    EXPECT_LT(goals[0].y(), 1.55);
+}
+
 TEST(SimCoverage, CoverageEntersEveryRoomAndTurnsAtEachGoal) {
     const Scene s = officeScene(6, 3);
     TrajectoryParams p;

@@ -186,6 +186,13 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         LocalObject o;
         o.box = objectBoxFromDetection(obs.boxInWorld(i, robot_pose));
         if (!o.box.isValid(1e-4)) { ++m_stats.rejected_invalid; continue; }
+        // A centre in unknown space (outside the building, behind its outer wall) is a depth
+        // error: the room lookup's search radius would otherwise give it the room next to it.
+        if (!m_walls.empty() && !m_walls.isFree(o.box.center.x(), o.box.center.y()) &&
+            !m_walls.isWall(o.box.center.x(), o.box.center.y())) {
+            ++m_stats.rejected_outside;
+            continue;
+        }
         if (current_room != 0) {
             const int r = roomOf(o.box.center.x(), o.box.center.y());
             if (r != 0 && r != current_room) { ++m_stats.rejected_room; continue; }

@@ -28,6 +28,7 @@ struct BuilderStats {
     std::size_t rejected_confidence = 0; ///< below the class confidence threshold
     std::size_t rejected_range = 0;      ///< outside the class range
     std::size_t rejected_room = 0;       ///< centre in another room than the robot's
+    std::size_t rejected_outside = 0;    ///< centre in unknown space of the floor plan (outside the building)
     std::size_t rejected_invalid = 0;    ///< non-finite / degenerate box
     std::size_t integrations = 0;        ///< local maps integrated (flush with content)
     std::size_t merged = 0;              ///< local objects merged into map objects
