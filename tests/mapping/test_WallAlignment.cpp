@@ -26,6 +26,17 @@ Box3D cabinetAtGap(double gap, double x = 2.0, double yaw = 0.0) {
     return makeUprightBox({x, kFaceY0 + gap + 0.225, 0.8}, {1.0, 0.45, 1.6}, yaw);
 }
 
+/// A builder on the test floor plan with an empty map of one class.
+ObjectMapBuilder builderOnTestFloor(const MappingOptions& opts, const std::string& class_name) {
+    ObjectMapBuilder b(opts);
+    b.setFloorPlan(kGrid, {});
+    simp::world::ObjectMapData m;
+    m.class_names = {class_name};
+    m.class_noise.resize(1);
+    b.setMap(m);
+    return b;
+}
+
 }  // namespace
 
 TEST(WallAlignment, WallFacesOfTheTestGrid) {
@@ -117,12 +128,7 @@ TEST(WallAlignment, BuilderPutsACabinetSeenOffTheWallAgainstIt) {
     const auto run = [&](bool wall_align) {
         auto opts = test::testOptions();
         opts.wall_align = wall_align;
-        ObjectMapBuilder b(opts);
-        b.setFloorPlan(kGrid, {});
-        simp::world::ObjectMapData m;
-        m.class_names = classes;
-        m.class_noise.resize(1);
-        b.setMap(m);
+        ObjectMapBuilder b = builderOnTestFloor(opts, classes[0]);
         std::mt19937 rng(3);
         for (int s = 0; s < 20; ++s) {
             const mrpt::poses::CPose3D pose(1.0 + 0.1 * s, 3.0, 0, -M_PI / 2, 0, 0);  // facing the wall
@@ -147,12 +153,7 @@ TEST(ObjectMapBuilder, TentativeObjectsStayOutOfTheConfirmedMap) {
     const std::vector<test::TrueObject> truth = {{0, makeUprightBox({2.5, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};
     auto opts = test::testOptions();
     ASSERT_EQ(opts.min_confirmed_matches, 3);
-    ObjectMapBuilder b(opts);
-    b.setFloorPlan(kGrid, {});
-    simp::world::ObjectMapData m;
-    m.class_names = classes;
-    m.class_noise.resize(1);
-    b.setMap(m);
+    ObjectMapBuilder b = builderOnTestFloor(opts, classes[0]);
     std::mt19937 rng(4);
     const mrpt::poses::CPose3D pose(1.0, 3.0, 0, 0, 0, 0);  // front camera sees the table
     int detections = 0;
@@ -177,12 +178,7 @@ TEST(ObjectMapBuilder, DetectionOutsideTheBuildingIsRejected) {
     // plan); the room lookup's search radius would give it the room in front of the wall.
     const std::vector<std::string> classes = {"cabinet"};
     const auto run = [&](double y) {
-        ObjectMapBuilder b(test::testOptions());
-        b.setFloorPlan(kGrid, {});
-        simp::world::ObjectMapData m;
-        m.class_names = classes;
-        m.class_noise.resize(1);
-        b.setMap(m);
+        ObjectMapBuilder b = builderOnTestFloor(test::testOptions(), classes[0]);
         std::mt19937 rng(9);
         const std::vector<test::TrueObject> seen = {{0, makeUprightBox({2.0, y, 0.8}, {1.0, 0.45, 1.6}, 0.0)}};
         const mrpt::poses::CPose3D pose(2.0, 2.0, 0, -M_PI / 2, 0, 0);  // front camera faces the wall

@@ -18,21 +18,18 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
         }
 }
 
-bool WallGrid::isFree(double x_m, double y_m) const {
-    if (m_free.empty()) return false;
+
+bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const {
+    if (cells.empty()) return false;
     const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
     const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
-    if (cx < 0 || cy < 0 || cx >= m_free.cols || cy >= m_free.rows) return false;
-    return m_free(cy, cx) != 0;
+    if (cx < 0 || cy < 0 || cx >= cells.cols || cy >= cells.rows) return false;
+    return cells(cy, cx) != 0;
 }
 
-bool WallGrid::isWall(double x_m, double y_m) const {
-    if (m_wall.empty()) return false;
-    const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
-    const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
-    if (cx < 0 || cy < 0 || cx >= m_wall.cols || cy >= m_wall.rows) return false;
-    return m_wall(cy, cx) != 0;
-}
+bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m); }
+
+bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m); }
 
 double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
     constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -33,6 +33,9 @@ class WallGrid {
     const cv::Mat1b& cells() const { return m_wall; }  ///< row = grid cy (y up), 255 = wall
 
    private:
+    /// True when the world point falls in a non-zero cell of `cells` (false outside the grid).
+    bool cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const;
+
     cv::Mat1b m_wall;
     cv::Mat1b m_free;  ///< 255 = known free space
     double m_x_min = 0, m_y_min = 0, m_res = 0.05;
