@@ -153,7 +153,8 @@ void MapApp::run() {
     out << "simp-map: " << s.frames << " camera frames, " << s.detections << " detections (rejected: " << s.rejected_class
         << " class disabled, " << s.rejected_confidence << " confidence, " << s.rejected_range << " range, "
         << s.rejected_room << " other room, " << s.rejected_outside << " outside the floor, " << s.rejected_invalid << " invalid), " << s.integrations
-        << " integrations, " << s.merged << " merges, " << s.added << " added, " << s.purged << " purged\n";
+        << " integrations, " << s.merged << " merges, " << s.added << " added, " << s.purged << " purged, "
+        << s.duplicates_merged << " duplicates merged\n";
     std::map<std::string, int> per_class;
     for (const auto& o : result.objects.objects) ++per_class[result.objects.class_names[o.class_id]];
     out << "simp-map: " << result.objects.objects.size() << " objects written to '" << m_args.out_dir << "'\n";
