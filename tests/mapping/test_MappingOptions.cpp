@@ -73,6 +73,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("min_confirmed_matches = 0", "min_confirmed_matches");
     expectThrowNaming("min_confirmed_matches = 2.5", "min_confirmed_matches");
     expectThrowNaming("wall_align = maybe", "wall_align");
+    expectThrowNaming("wall_align_max_enclosed_unknown_m2 = -1", "wall_align_max_enclosed_unknown_m2");
     expectThrowNaming("class_wall_align_max_gap_m = board", "class_wall_align_max_gap_m");
     expectThrowNaming("class_wall_align_max_gap_m = board:-0.1", "board");
     expectThrowNaming("wall_align_rays = 1", "wall_align_rays");
@@ -83,7 +84,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
 
 TEST(MappingOptions, WallAlignmentAndConfirmationKeys) {
     const MappingOptions defaults;
-    EXPECT_TRUE(defaults.wall_align);
+    EXPECT_EQ(defaults.wall_align, WallAlignMode::Auto);
     EXPECT_EQ(defaults.min_confirmed_matches, 3);
     ASSERT_TRUE(defaults.wallAlignmentOf("board").has_value());
     EXPECT_DOUBLE_EQ(defaults.wallAlignmentOf("board")->max_gap_m, 0.3);
@@ -116,7 +117,12 @@ TEST(MappingOptions, WallAlignmentAndConfirmationKeys) {
     mrpt::config::CConfigFileMemory off("[mapping]\nwall_align = false\n");
     MappingOptions f;
     f.loadFromConfigFile(off, "mapping");
+    EXPECT_EQ(f.wall_align, WallAlignMode::Off);
     EXPECT_FALSE(f.wallAlignmentOf("board").has_value());
+    mrpt::config::CConfigFileMemory on("[mapping]\nwall_align = true\nwall_align_max_enclosed_unknown_m2 = 4\n");
+    f.loadFromConfigFile(on, "mapping");
+    EXPECT_EQ(f.wall_align, WallAlignMode::On);
+    EXPECT_DOUBLE_EQ(f.wall_align_max_enclosed_unknown_m2, 4.0);
 }
 
 TEST(MappingOptions, DuplicateRulesLoadWithPerClassRadius) {

@@ -127,7 +127,7 @@ TEST(WallAlignment, BuilderPutsACabinetSeenOffTheWallAgainstIt) {
     const std::vector<test::TrueObject> seen = {{0, cabinetAtGap(0.12)}};
     const auto run = [&](bool wall_align) {
         auto opts = test::testOptions();
-        opts.wall_align = wall_align;
+        opts.wall_align = wall_align ? WallAlignMode::Auto : WallAlignMode::Off;
         ObjectMapBuilder b = builderOnTestFloor(opts, classes[0]);
         std::mt19937 rng(3);
         for (int s = 0; s < 20; ++s) {
@@ -193,4 +193,39 @@ TEST(ObjectMapBuilder, DetectionOutsideTheBuildingIsRejected) {
     const ObjectMapBuilder inside = run(kFaceY0 + 0.3);  // the same in front of the wall
     EXPECT_EQ(inside.stats().rejected_outside, 0u);
     EXPECT_EQ(inside.map().objects.size(), 1u);
+}
+
+TEST(WallAlignment, AutoIsOffOnAFloorPlanThatDrawsFurniture) {
+    // The authors' GT rendering draws furniture into the floor plan: walls around unknown cells.
+    // There a drawn board's front face passes for the wall, so auto leaves the boxes alone.
+    auto grid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);
+    const auto drawBlock = [&](double x0, double y0, double x1, double y1) {  // outline + unknown interior
+        for (int cy = grid.y2idx(y0); cy <= grid.y2idx(y1); ++cy)
+            for (int cx = grid.x2idx(x0); cx <= grid.x2idx(x1); ++cx) {
+                const bool edge = cx == grid.x2idx(x0) || cx == grid.x2idx(x1) || cy == grid.y2idx(y0) || cy == grid.y2idx(y1);
+                grid.setCell(cx, cy, edge ? 0.0f : 0.5f);
+            }
+    };
+    drawBlock(6.0, 1.0, 7.6, 2.0);  // a drawn table of 1.6 m x 1.0 m
+    // interior: (1.6 - one cell) x (1.0 - one cell) inside the one-cell outline
+    EXPECT_NEAR(WallGrid(grid).enclosedUnknownArea_m2(), 1.55 * 0.95, 1e-6);
+    EXPECT_NEAR(kWalls.enclosedUnknownArea_m2(), 0.0, 1e-12);
+    auto opts = test::testOptions();
+    ObjectMapBuilder plain(opts);
+    plain.setFloorPlan(kGrid, {});
+    EXPECT_TRUE(plain.wallAlignmentActive());
+    ObjectMapBuilder drawn(opts);
+    drawn.setFloorPlan(grid, {});
+    EXPECT_FALSE(drawn.wallAlignmentActive());
+    opts.wall_align = WallAlignMode::On;
+    ObjectMapBuilder forced(opts);
+    forced.setFloorPlan(grid, {});
+    EXPECT_TRUE(forced.wallAlignmentActive());
+    opts.wall_align = WallAlignMode::Off;
+    ObjectMapBuilder off(opts);
+    off.setFloorPlan(kGrid, {});
+    EXPECT_FALSE(off.wallAlignmentActive());
+    // A detection centred in the drawn table (unknown, but enclosed) is inside the building.
+    EXPECT_FALSE(WallGrid(grid).isOutside(6.6, 1.5));
+    EXPECT_TRUE(WallGrid(grid).isOutside(-0.3, 3.0));
 }

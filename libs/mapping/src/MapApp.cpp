@@ -102,6 +102,9 @@ void MapApp::run() {
     start.room_categories = w.objects.room_categories;
     m_builder.setMap(start);
     m_builder.setFloorPlan(w.floorplan, w.rooms);
+    if (m_builder.options().wall_align == WallAlignMode::Auto && !m_builder.wallAlignmentActive())
+        out << "simp-map: note: the floor plan of '" << m_args.world_dir
+            << "' draws furniture (unknown areas enclosed by walls): wall alignment is off (wall_align = auto)\n";
 
     const std::vector<io::StampedPose2D> traj = io::readTum(m_args.poses_path);
     if (traj.empty()) throw std::runtime_error(m_args.poses_path + ": no poses");

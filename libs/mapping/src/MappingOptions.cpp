@@ -92,7 +92,7 @@ double MappingOptions::duplicateCenterRadiusOf(const std::string& class_name) co
 
 std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::string& class_name) const {
     const auto it = class_wall_align_max_gap_m.find(class_name);
-    if (!wall_align || it == class_wall_align_max_gap_m.end()) return std::nullopt;
+    if (wall_align == WallAlignMode::Off || it == class_wall_align_max_gap_m.end()) return std::nullopt;
     WallAlignmentParams p;
     p.max_gap_m = it->second;
     p.max_penetration_m = wall_align_max_penetration_m;
@@ -120,7 +120,15 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
         const std::string text = c.read_string(s, key, "", false);
         if (!trimIniValue(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
     }
-    readBool(c, s, "wall_align", wall_align);
+    {
+        const std::string mode = trimIniValue(c.read_string(s, "wall_align", "", false));
+        if (mode == "auto") wall_align = WallAlignMode::Auto;
+        else if (mode == "true" || mode == "on" || mode == "1") wall_align = WallAlignMode::On;
+        else if (mode == "false" || mode == "off" || mode == "0") wall_align = WallAlignMode::Off;
+        else if (!mode.empty())
+            throw std::invalid_argument("mapping option [" + s + "] wall_align = '" + mode + "': expected auto, true or false");
+    }
+    readDouble(c, s, "wall_align_max_enclosed_unknown_m2", wall_align_max_enclosed_unknown_m2);
     {
         // An explicit (even empty) list replaces the default: "class_wall_align_max_gap_m = " aligns no class.
         const std::string key = "class_wall_align_max_gap_m";
@@ -194,6 +202,7 @@ void MappingOptions::validate() const {
     for (const auto& [name, g] : class_wall_align_max_gap_m)
         requireRange(g, 0.0, 10.0, ("class_wall_align_max_gap_m of class '" + name + "'").c_str());
     requireRange(wall_align_max_penetration_m, 0.0, 10.0, "wall_align_max_penetration_m");
+    requireRange(wall_align_max_enclosed_unknown_m2, 0.0, 1e9, "wall_align_max_enclosed_unknown_m2");
     requireRange(wall_align_max_yaw_rad, 0.0, 1.5, "wall_align_max_yaw_rad");
     requireRange(wall_align_max_residual_m, 0.0, 10.0, "wall_align_max_residual_m");
     requireRange(wall_align_rays, 2, 100, "wall_align_rays");
@@ -238,7 +247,9 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "duplicate_center_radius_m = " << duplicate_center_radius_m << " m";
     for (const auto& [name, r] : class_duplicate_center_radius_m) o << ", " << name << ": " << r << " m";
     o << "\n";
-    o << "wall_align            = " << (wall_align ? "true" : "false") << ", max gap per class:";
+    o << "wall_align            = "
+      << (wall_align == WallAlignMode::Auto ? "auto" : wall_align == WallAlignMode::On ? "true" : "false")
+      << " (auto: off above " << wall_align_max_enclosed_unknown_m2 << " m^2 enclosed unknown), max gap per class:";
     for (const auto& [name, g] : class_wall_align_max_gap_m) o << " " << name << ": " << g << " m,";
     o << " penetration <= " << wall_align_max_penetration_m << " m, yaw <= " << wall_align_max_yaw_rad
       << " rad, residual <= " << wall_align_max_residual_m << " m, " << wall_align_rays << " rays per side\n";

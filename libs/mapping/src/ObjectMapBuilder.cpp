@@ -24,6 +24,7 @@ ObjectMapBuilder::ObjectMapBuilder(const TOptions& options) : m_options(options)
 
 void ObjectMapBuilder::setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms) {
     m_walls = WallGrid(floorplan);
+    m_enclosed_unknown_m2 = m_walls.enclosedUnknownArea_m2();
     if (!rooms.empty()) {
         m_rooms = rooms;
     } else {
@@ -186,10 +187,10 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         LocalObject o;
         o.box = objectBoxFromDetection(obs.boxInWorld(i, robot_pose));
         if (!o.box.isValid(1e-4)) { ++m_stats.rejected_invalid; continue; }
-        // A centre in unknown space (outside the building, behind its outer wall) is a depth
-        // error: the room lookup's search radius would otherwise give it the room next to it.
-        if (!m_walls.empty() && !m_walls.isFree(o.box.center.x(), o.box.center.y()) &&
-            !m_walls.isWall(o.box.center.x(), o.box.center.y())) {
+        // A centre outside the building (unknown space reached from the plan's border, behind the
+        // outer wall) is a depth error: the room lookup's search radius would otherwise give it the
+        // room next to it. Unknown islands inside (furniture drawn grey) are not outside.
+        if (!m_walls.empty() && m_walls.isOutside(o.box.center.x(), o.box.center.y())) {
             ++m_stats.rejected_outside;
             continue;
         }

@@ -151,8 +151,15 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
     return n_removed;
 }
 
+bool ObjectMapBuilder::wallAlignmentActive() const {
+    if (m_walls.empty() || m_options.wall_align == WallAlignMode::Off) return false;
+    return m_options.wall_align == WallAlignMode::On ||
+           m_enclosed_unknown_m2 <= m_options.wall_align_max_enclosed_unknown_m2;
+}
+
 geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D& box) const {
-    if (m_walls.empty() || class_id < 0 || static_cast<std::size_t>(class_id) >= m_g.class_names.size()) return box;
+    if (!wallAlignmentActive() || class_id < 0 || static_cast<std::size_t>(class_id) >= m_g.class_names.size())
+        return box;
     const auto params = m_options.wallAlignmentOf(m_g.class_names[static_cast<std::size_t>(class_id)]);
     return params ? alignToWalls(box, m_walls, *params) : box;
 }

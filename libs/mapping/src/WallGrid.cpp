@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace simp::mapping {
 
@@ -16,6 +17,22 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
             if (p_free < max_free_prob_of_wall) m_wall(cy, cx) = 255;
             else if (p_free > 1.0 - max_free_prob_of_wall) m_free(cy, cx) = 255;
         }
+    // Outside = unknown cells connected (4-neighbours) to the grid's border through unknown cells.
+    // Unknown islands enclosed by walls (furniture drawn grey in a floor plan) are inside.
+    m_outside = cv::Mat1b::zeros(ny, nx);
+    std::vector<std::pair<int, int>> stack;
+    const auto push = [&](int cx, int cy) {
+        if (cx < 0 || cy < 0 || cx >= nx || cy >= ny || m_outside(cy, cx) || m_wall(cy, cx) || m_free(cy, cx)) return;
+        m_outside(cy, cx) = 255;
+        stack.emplace_back(cx, cy);
+    };
+    for (int cx = 0; cx < nx; ++cx) push(cx, 0), push(cx, ny - 1);
+    for (int cy = 0; cy < ny; ++cy) push(0, cy), push(nx - 1, cy);
+    while (!stack.empty()) {
+        const auto [cx, cy] = stack.back();
+        stack.pop_back();
+        push(cx + 1, cy), push(cx - 1, cy), push(cx, cy + 1), push(cx, cy - 1);
+    }
 }
 
 
@@ -30,6 +47,21 @@ bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const {
 bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m); }
 
 bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m); }
+
+double WallGrid::enclosedUnknownArea_m2() const {
+    std::size_t n = 0;
+    for (int cy = 0; cy < m_wall.rows; ++cy)
+        for (int cx = 0; cx < m_wall.cols; ++cx) n += !m_wall(cy, cx) && !m_free(cy, cx) && !m_outside(cy, cx);
+    return static_cast<double>(n) * m_res * m_res;
+}
+
+bool WallGrid::isOutside(double x_m, double y_m) const {
+    if (m_outside.empty()) return false;
+    const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
+    const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
+    if (cx < 0 || cy < 0 || cx >= m_outside.cols || cy >= m_outside.rows) return true;
+    return m_outside(cy, cx) != 0;
+}
 
 double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
     constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -28,6 +28,9 @@ enum class RoomUpdatePolicy {
     All           ///< no room filter
 };
 
+/// When the floor-plan prior (wall alignment) applies.
+enum class WallAlignMode { Auto, On, Off };
+
 struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// @name Local map integration trigger (the d_xy / d_theta of the paper)
     /// @{
@@ -89,7 +92,12 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// most max_gap in front of it or wall_align_max_penetration_m inside, is turned parallel and
     /// moved flush against it (alignToWalls).
     /// @{
-    bool wall_align = true;
+    /// auto: on unless the floor plan draws furniture (unknown areas enclosed by walls, as the
+    /// authors' GT rendering Map.png does), where a drawn board's front face would pass for the
+    /// wall and push the box off its own footprint. on / off: always / never.
+    WallAlignMode wall_align = WallAlignMode::Auto;
+    /// auto: a floor plan with more enclosed unknown area than this draws furniture (m^2).
+    double wall_align_max_enclosed_unknown_m2 = 1.0;
     /// Per class: the largest gap side -> wall face that is closed (m); classes not listed are never aligned.
     std::map<std::string, double> class_wall_align_max_gap_m{
         {"sink", 0.3},    {"oven", 0.3},    {"board", 0.3}, {"drawers", 0.3}, {"sofa", 0.3},
@@ -98,7 +106,8 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double wall_align_max_yaw_rad = 0.2;        ///< rad
     double wall_align_max_residual_m = 0.1;     ///< m
     int wall_align_rays = 5;                    ///< rays per side
-    /// The alignment parameters of a class; nullopt when the class is not aligned (or wall_align is off).
+    /// The alignment parameters of a class; nullopt when the class is not aligned (or wall_align is
+    /// off). With auto, the builder also checks its floor plan.
     std::optional<WallAlignmentParams> wallAlignmentOf(const std::string& class_name) const;
     /// @}
 

@@ -80,6 +80,9 @@ class ObjectMapBuilder {
     /// Room id at a world point: the room map's, else the nearest non-zero id within
     /// room_search_radius_m; 0 when there is no room map or none is near.
     int roomOf(double x_m, double y_m) const;
+    /// Whether the floor-plan prior applies: wall_align on, or auto and the floor plan draws no
+    /// furniture (WallGrid::enclosedUnknownArea_m2() <= wall_align_max_enclosed_unknown_m2).
+    bool wallAlignmentActive() const;
     /// The camera of an observation in the world (intrinsics of the observation, else the defaults).
     PinholeCamera cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const;
 
@@ -122,6 +125,7 @@ class ObjectMapBuilder {
     std::int64_t m_next_id = 1;
 
     WallGrid m_walls;
+    double m_enclosed_unknown_m2 = 0;  ///< of m_walls (computed once in setFloorPlan)
     world::RoomMap m_rooms;
     VisibilityRenderer m_renderer;
     std::vector<geometry::Box3D> m_boxes_scratch;

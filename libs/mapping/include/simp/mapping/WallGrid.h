@@ -25,6 +25,13 @@ class WallGrid {
     /// 1 - max_free_prob_of_wall; false for walls, unknown cells and outside the grid).
     bool isFree(double x_m, double y_m) const;
 
+    /// True when the world point (m) lies outside the building: in an unknown cell connected to
+    /// the grid's border through unknown cells, or outside the grid (false without a grid).
+    bool isOutside(double x_m, double y_m) const;
+
+    /// Area (m^2) of the unknown cells enclosed by walls (not outside): furniture drawn into the plan.
+    double enclosedUnknownArea_m2() const;
+
     /// Distance (m) along the horizontal ray from `origin_m` in direction `dir` (need not be unit;
     /// only xy used) to the boundary of the first wall cell, or +infinity when none within max_dist_m.
     /// A ray starting inside a wall cell returns 0. Amanatides-Woo grid traversal.
@@ -37,7 +44,8 @@ class WallGrid {
     bool cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const;
 
     cv::Mat1b m_wall;
-    cv::Mat1b m_free;  ///< 255 = known free space
+    cv::Mat1b m_free;     ///< 255 = known free space
+    cv::Mat1b m_outside;  ///< 255 = unknown space connected to the border
     double m_x_min = 0, m_y_min = 0, m_res = 0.05;
 };
 
