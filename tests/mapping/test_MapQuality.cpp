@@ -4,6 +4,7 @@
 #include <simp/eval/MapMetrics.h>
 #include <simp/mapping/MapApp.h>
 #include <simp/sim/SimApp.h>
+#include <simp/world/SimpFormat.h>
 #include <simp/world/World.h>
 
 #include <filesystem>
@@ -53,4 +54,46 @@ TEST(MapQuality, BuiltInOfficeKnownPoses) {
     EXPECT_GT(m.iou, 0.56);
     EXPECT_GT(m.recall, 0.85);
     EXPECT_GT(m.precision, 0.79);
+}
+
+TEST(MapQuality, AuthorsOfficeSimulatedDetections) {
+    // The paper's own floor (../shared/data/simp-office, read-only; skipped when absent): its GT
+    // map as the world, simulated detections along a coverage run, the default mapping options.
+    const std::string office = std::string(SIMP_SHARED_DATA_DIR) + "/simp-office";
+    if (!fs::exists(office + "/global_variance.json"))
+        GTEST_SKIP() << "simp-office data not found at " << office << " (optional, read-only authors' data)";
+    const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "mapping" / "quality_office";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string W = (dir / "W").string(), Q = (dir / "Q").string(), M = (dir / "M").string();
+    simp::world::saveWorld(simp::world::importSimpMap(office), W);
+    std::ostringstream log;
+    simp::sim::SimApp sim;
+    if (sim.initialize({"sequence", "--world", W, "--seed", "1", "--duration", "1200", "--coverage", "--out", Q}, log))
+        sim.run(log);
+    simp::mapping::MapAppArgs a;
+    a.world_dir = W;
+    a.rawlog_path = Q + "/sequence.rawlog";
+    a.poses_path = Q + "/groundtruth.tum";
+    a.out_dir = M;
+    a.config_path = std::string(SIMP_SOURCE_DIR) + "/config_ini/mapping.ini";
+    simp::mapping::MapApp app;
+    app.log = &log;
+    app.initialize(a);
+    app.run();
+    // Their Map.png draws the furniture: wall_align = auto switches the floor-plan prior off.
+    EXPECT_FALSE(app.builder().wallAlignmentActive());
+    EXPECT_NE(log.str().find("wall alignment is off"), std::string::npos);
+
+    simp::eval::MapMatchParams p;
+    p.classes = {"board", "cabinet", "desk", "drawers", "fire extinguisher", "oven", "potted plant", "sink", "sofa",
+                 "table"};
+    const simp::eval::MapMetrics m = simp::eval::evaluateMap(simp::world::loadWorld(W).objects,
+                                                             simp::world::loadWorld(M).objects, p);
+    std::cout << "authors' office: IoU " << m.iou << ", precision " << m.precision << ", recall " << m.recall << "\n";
+    // Measured with seed 1 (2026-11-22): IoU 0.62, Pr 0.95, Rc 0.92 (doc/results.md, mean of six
+    // seeds 0.60 / 0.89 / 0.90; the paper's KP map 0.67 / 0.96 / 0.94). Asserted ~0.08 below.
+    EXPECT_GT(m.iou, 0.54);
+    EXPECT_GT(m.precision, 0.87);
+    EXPECT_GT(m.recall, 0.84);
 }
