@@ -89,6 +89,8 @@ TEST(MappingOptions, WallAlignmentAndConfirmationKeys) {
     ASSERT_TRUE(defaults.wallAlignmentOf("board").has_value());
     EXPECT_DOUBLE_EQ(defaults.wallAlignmentOf("board")->max_gap_m, 0.3);
     EXPECT_FALSE(defaults.wallAlignmentOf("potted plant").has_value());  // plants stand free
+    EXPECT_FALSE(defaults.wallAlignmentOf("sofa").has_value());          // often a little off the wall
+    EXPECT_TRUE(defaults.wallAlignmentOf("cabinet").has_value());
     mrpt::config::CConfigFileMemory ini(
         "[mapping]\n"
         "min_confirmed_matches = 5\n"
