@@ -249,7 +249,7 @@ void ObjectMapBuilder::flush() {
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
     // Floor-plan prior: objects updated in this window stand flush against their wall.
-    for (auto& o : added) matched.insert(o.id);
+    for (const auto& o : added) matched.insert(o.id);
     for (auto& o : m_g.objects)
         if (matched.count(o.id)) alignToFloorPlan(o);
     if (m_options.merge_duplicates) {
