@@ -125,6 +125,33 @@ TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
     }
 }
 
+TEST(ObjectMapBuilder, TablesBackToBackStayTwoWithTheDefaultRules) {
+    // Two work tables pushed together (2 cm apart), as in the authors' office: the duplicate
+    // rules of the defaults (centre radius 0.5 m, cost < 0.7 within 1 m, overlap > 20 %) must not
+    // make them one (their centres are 0.82 m apart, their boxes do not interpenetrate).
+    const std::vector<test::TrueObject> truth = {{0, makeUprightBox({5.0, 2.59, 0.375}, {1.6, 0.8, 0.75}, 0.0)},
+                                                 {0, makeUprightBox({5.0, 3.41, 0.375}, {1.6, 0.8, 0.75}, 0.0)}};
+    auto opts = test::testOptions();
+    ASSERT_DOUBLE_EQ(opts.duplicate_min_overlap, 0.2);
+    ObjectMapBuilder b(opts);
+    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+    b.setMap(emptyMap());
+    std::mt19937 rng(12);
+    for (int s = 0; s < 40; ++s) {
+        const mrpt::poses::CPose3D pose(1.8 + 0.03 * s, 3.0, 0, 0.01 * (s % 7), 0, 0);
+        insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
+    }
+    b.flush();
+    int tables = 0;
+    for (const auto& o : b.confirmedMap().objects) tables += o.class_id == 0 && o.n_match >= 10;
+    EXPECT_EQ(tables, 2);
+    for (const auto& t : truth) {
+        const auto* o = closest(b.map(), 0, t.box.center);
+        ASSERT_NE(o, nullptr);
+        EXPECT_LT((o->box.center - t.box.center).head<2>().norm(), 0.1);
+    }
+}
+
 namespace {
 
 simp::world::MapObject mapObject(std::int64_t id, int cls, const simp::geometry::Box3D& box, int n_match) {
@@ -178,6 +205,7 @@ TEST(ObjectMapBuilder, OverlapRuleMergesInterpenetratingBoxesOnlyWhenEnabled) {
         mapObject(1, 0, makeUprightBox({5.0, 2.7, 0.375}, {0.8, 1.6, 0.75}, 0.0), 20),
         mapObject(2, 0, makeUprightBox({5.0, 3.3, 0.375}, {0.8, 1.6, 0.75}, 0.0), 20)};
     auto opts = test::testOptions();
+    opts.duplicate_min_overlap = 0;  // off
     EXPECT_EQ(afterOneEmptyWindow(opts, tables).map().objects.size(), 2u);
     opts.duplicate_min_overlap = 0.5;
     const ObjectMapBuilder b = afterOneEmptyWindow(opts, tables);
