@@ -1,5 +1,7 @@
 #include <simp/mapping/WallGrid.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -19,49 +21,39 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
         }
     // Outside = unknown cells connected (4-neighbours) to the grid's border through unknown cells.
     // Unknown islands enclosed by walls (furniture drawn grey in a floor plan) are inside.
-    m_outside = cv::Mat1b::zeros(ny, nx);
-    std::vector<std::pair<int, int>> stack;
-    const auto push = [&](int cx, int cy) {
-        if (cx < 0 || cy < 0 || cx >= nx || cy >= ny || m_outside(cy, cx) || m_wall(cy, cx) || m_free(cy, cx)) return;
-        m_outside(cy, cx) = 255;
-        stack.emplace_back(cx, cy);
+    const cv::Mat1b unknown = ~(m_wall | m_free);
+    cv::Mat1i labels;
+    const int n_labels = cv::connectedComponents(unknown, labels, 4, CV_32S);
+    std::vector<bool> reaches_border(static_cast<std::size_t>(n_labels), false);
+    const auto mark = [&](int cx, int cy) {
+        if (unknown(cy, cx)) reaches_border[static_cast<std::size_t>(labels(cy, cx))] = true;
     };
-    for (int cx = 0; cx < nx; ++cx) push(cx, 0), push(cx, ny - 1);
-    for (int cy = 0; cy < ny; ++cy) push(0, cy), push(nx - 1, cy);
-    while (!stack.empty()) {
-        const auto [cx, cy] = stack.back();
-        stack.pop_back();
-        push(cx + 1, cy), push(cx - 1, cy), push(cx, cy + 1), push(cx, cy - 1);
-    }
+    for (int cx = 0; cx < nx; ++cx) mark(cx, 0), mark(cx, ny - 1);
+    for (int cy = 0; cy < ny; ++cy) mark(0, cy), mark(nx - 1, cy);
+    m_outside = cv::Mat1b::zeros(ny, nx);
+    for (int cy = 0; cy < ny; ++cy)
+        for (int cx = 0; cx < nx; ++cx)
+            if (unknown(cy, cx) && reaches_border[static_cast<std::size_t>(labels(cy, cx))]) m_outside(cy, cx) = 255;
 }
 
-
-bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const {
+bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool beyond_grid) const {
     if (cells.empty()) return false;
     const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
     const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
-    if (cx < 0 || cy < 0 || cx >= cells.cols || cy >= cells.rows) return false;
+    if (cx < 0 || cy < 0 || cx >= cells.cols || cy >= cells.rows) return beyond_grid;
     return cells(cy, cx) != 0;
 }
 
-bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m); }
+bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m, false); }
 
-bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m); }
+bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m, false); }
 
 double WallGrid::enclosedUnknownArea_m2() const {
-    std::size_t n = 0;
-    for (int cy = 0; cy < m_wall.rows; ++cy)
-        for (int cx = 0; cx < m_wall.cols; ++cx) n += !m_wall(cy, cx) && !m_free(cy, cx) && !m_outside(cy, cx);
-    return static_cast<double>(n) * m_res * m_res;
+    if (m_wall.empty()) return 0.0;
+    return cv::countNonZero(~(m_wall | m_free | m_outside)) * m_res * m_res;
 }
 
-bool WallGrid::isOutside(double x_m, double y_m) const {
-    if (m_outside.empty()) return false;
-    const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
-    const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
-    if (cx < 0 || cy < 0 || cx >= m_outside.cols || cy >= m_outside.rows) return true;
-    return m_outside(cy, cx) != 0;
-}
+bool WallGrid::isOutside(double x_m, double y_m) const { return cellIsSet(m_outside, x_m, y_m, true); }
 
 double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
     constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -2,6 +2,8 @@
 #include <simp/sim/PathPlanner.h>
 #include <simp/sim/Trajectory.h>
 
+#include <opencv2/imgproc.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -32,32 +34,20 @@ std::optional<Eigen::Vector2d> nearestFree(const Raster& cspace, const Eigen::Ve
 /// Cells (index cy * nx + cx) of the largest 4-connected component of cells with clearance > 0:
 /// the free space the robot can drive in (pockets walled in by furniture are left out).
 std::vector<std::uint8_t> largestFreeComponent(const Raster& cspace, const std::vector<float>& dist) {
-    std::vector<int> label(dist.size(), 0);
-    std::vector<std::size_t> stack;
-    int best_label = 0;
-    std::size_t best_size = 0;
-    int next = 0;
-    for (std::size_t seed = 0; seed < dist.size(); ++seed) {
-        if (dist[seed] <= 0 || label[seed] != 0) continue;
-        label[seed] = ++next;
-        std::size_t size = 0;
-        stack.assign(1, seed);
-        while (!stack.empty()) {
-            const std::size_t i = stack.back();
-            stack.pop_back();
-            ++size;
-            const int cx = static_cast<int>(i % cspace.nx), cy = static_cast<int>(i / cspace.nx);
-            const int nb[4][2] = {{cx + 1, cy}, {cx - 1, cy}, {cx, cy + 1}, {cx, cy - 1}};
-            for (const auto& q : nb) {
-                if (!cspace.inside(q[0], q[1])) continue;
-                const std::size_t j = static_cast<std::size_t>(q[1]) * cspace.nx + q[0];
-                if (dist[j] > 0 && label[j] == 0) label[j] = next, stack.push_back(j);
-            }
-        }
-        if (size > best_size) best_size = size, best_label = next;
-    }
+    cv::Mat1b free(cspace.ny, cspace.nx);
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx)
+            free(cy, cx) = dist[static_cast<std::size_t>(cy) * cspace.nx + cx] > 0 ? 255 : 0;
+    cv::Mat1i labels, stats;
+    cv::Mat centroids;
+    const int n = cv::connectedComponentsWithStats(free, labels, stats, centroids, 4, CV_32S);
+    int best = 0;  // label 0 = not free
+    for (int l = 1; l < n; ++l)
+        if (best == 0 || stats(l, cv::CC_STAT_AREA) > stats(best, cv::CC_STAT_AREA)) best = l;
     std::vector<std::uint8_t> in(dist.size(), 0);
-    for (std::size_t i = 0; i < dist.size(); ++i) in[i] = label[i] == best_label && best_label != 0;
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx)
+            in[static_cast<std::size_t>(cy) * cspace.nx + cx] = best != 0 && labels(cy, cx) == best;
     return in;
 }
 

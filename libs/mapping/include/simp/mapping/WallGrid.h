@@ -40,8 +40,8 @@ class WallGrid {
     const cv::Mat1b& cells() const { return m_wall; }  ///< row = grid cy (y up), 255 = wall
 
    private:
-    /// True when the world point falls in a non-zero cell of `cells` (false outside the grid).
-    bool cellIsSet(const cv::Mat1b& cells, double x_m, double y_m) const;
+    /// True when the world point falls in a non-zero cell of `cells`; `beyond_grid` outside the grid.
+    bool cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool beyond_grid) const;
 
     cv::Mat1b m_wall;
     cv::Mat1b m_free;     ///< 255 = known free space
