@@ -103,53 +103,50 @@ TEST(ObjectMapBuilder, RemovedObjectIsPurged) {
     EXPECT_LT((table->box.center - truth[0].box.center).norm(), 0.1);
 }
 
-TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
-    const std::vector<test::TrueObject> truth = {{2, makeUprightBox({5.0, 2.6, 0.45}, {0.5, 0.5, 0.9}, 0.0)},
-                                                 {2, makeUprightBox({5.0, 3.4, 0.45}, {0.5, 0.5, 0.9}, 0.0)}};
-    ObjectMapBuilder b(test::testOptions());
+namespace {
+
+/// Drives 40 poses along y = 3 m from x = x0 (facing +x, small turns) past `truth` (objects of one
+/// class) and expects each true object mapped once: as many well-seen (>= 10 detections)
+/// confirmed map objects of the class as true objects, the nearest one within 0.1 m of each.
+void expectEachMappedOnce(const std::vector<test::TrueObject>& truth, const MappingOptions& opts, unsigned seed,
+                          double x0) {
+    const int cls = truth.front().class_id;
+    ObjectMapBuilder b(opts);
     b.setFloorPlan(test::makeFloorPlan(8, 6), {});
     b.setMap(emptyMap());
-    std::mt19937 rng(11);
+    std::mt19937 rng(seed);
     for (int s = 0; s < 40; ++s) {
-        const mrpt::poses::CPose3D pose(2.0 + 0.03 * s, 3.0, 0, 0.01 * (s % 7), 0, 0);
+        const mrpt::poses::CPose3D pose(x0 + 0.03 * s, 3.0, 0, 0.01 * (s % 7), 0, 0);
         insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
     }
     b.flush();
-    int chairs = 0;
-    for (const auto& o : b.map().objects) chairs += o.class_id == 2 && o.n_match >= 10;
-    EXPECT_EQ(chairs, 2);
+    int well_seen = 0;
+    for (const auto& o : b.confirmedMap().objects) well_seen += o.class_id == cls && o.n_match >= 10;
+    EXPECT_EQ(well_seen, static_cast<int>(truth.size()));
     for (const auto& t : truth) {
-        const auto* o = closest(b.map(), 2, t.box.center);
+        const auto* o = closest(b.map(), cls, t.box.center);
         ASSERT_NE(o, nullptr);
         EXPECT_LT((o->box.center - t.box.center).head<2>().norm(), 0.1);
     }
+}
+
+}  // namespace
+
+TEST(ObjectMapBuilder, TwoCloseObjectsOfOneClassStayTwo) {
+    const std::vector<test::TrueObject> chairs = {{2, makeUprightBox({5.0, 2.6, 0.45}, {0.5, 0.5, 0.9}, 0.0)},
+                                                  {2, makeUprightBox({5.0, 3.4, 0.45}, {0.5, 0.5, 0.9}, 0.0)}};
+    expectEachMappedOnce(chairs, test::testOptions(), 11, 2.0);
 }
 
 TEST(ObjectMapBuilder, TablesBackToBackStayTwoWithTheDefaultRules) {
     // Two work tables pushed together (2 cm apart), as in the authors' office: the duplicate
     // rules of the defaults (centre radius 0.5 m, cost < 0.7 within 1 m, overlap > 20 %) must not
     // make them one (their centres are 0.82 m apart, their boxes do not interpenetrate).
-    const std::vector<test::TrueObject> truth = {{0, makeUprightBox({5.0, 2.59, 0.375}, {1.6, 0.8, 0.75}, 0.0)},
-                                                 {0, makeUprightBox({5.0, 3.41, 0.375}, {1.6, 0.8, 0.75}, 0.0)}};
-    auto opts = test::testOptions();
+    const std::vector<test::TrueObject> tables = {{0, makeUprightBox({5.0, 2.59, 0.375}, {1.6, 0.8, 0.75}, 0.0)},
+                                                  {0, makeUprightBox({5.0, 3.41, 0.375}, {1.6, 0.8, 0.75}, 0.0)}};
+    const auto opts = test::testOptions();
     ASSERT_DOUBLE_EQ(opts.duplicate_min_overlap, 0.2);
-    ObjectMapBuilder b(opts);
-    b.setFloorPlan(test::makeFloorPlan(8, 6), {});
-    b.setMap(emptyMap());
-    std::mt19937 rng(12);
-    for (int s = 0; s < 40; ++s) {
-        const mrpt::poses::CPose3D pose(1.8 + 0.03 * s, 3.0, 0, 0.01 * (s % 7), 0, 0);
-        insertAll(b, test::observe(truth, kClasses, pose, rng), pose);
-    }
-    b.flush();
-    int tables = 0;
-    for (const auto& o : b.confirmedMap().objects) tables += o.class_id == 0 && o.n_match >= 10;
-    EXPECT_EQ(tables, 2);
-    for (const auto& t : truth) {
-        const auto* o = closest(b.map(), 0, t.box.center);
-        ASSERT_NE(o, nullptr);
-        EXPECT_LT((o->box.center - t.box.center).head<2>().norm(), 0.1);
-    }
+    expectEachMappedOnce(tables, opts, 12, 1.8);
 }
 
 namespace {

@@ -114,23 +114,17 @@ TEST(Visibility, IntersectingBoxesDoNotHideEachOtherWhenGrouped) {
     const auto twin = makeUprightBox({3.0, 0.0, 0.5}, {1.0, 1.0, 1.0}, 0.0);
     const auto dup = makeUprightBox({3.3, 0.0, 0.5}, {1.0, 1.0, 1.0}, 0.0);
     const auto behind = makeUprightBox({5.0, 0.0, 0.4}, {0.5, 0.5, 0.8}, 0.0);
-    auto opts = test::testOptions();
-    std::vector<bool> active, candidate;
-    {
+    const auto activeWith = [&](const MappingOptions& opts) {
         ObjectMapBuilder b(opts);
         b.setMap(mapOf({twin, dup, behind}));
+        std::vector<bool> active, candidate;
         b.visibility(cameraAt(0, 0, 0), 0, active, candidate);
-        EXPECT_TRUE(active[0]);
-        EXPECT_FALSE(active[1]);
-        EXPECT_FALSE(active[2]);
-    }
+        return active;
+    };
+    auto opts = test::testOptions();
+    EXPECT_EQ(activeWith(opts), (std::vector<bool>{true, false, false}));
     opts.intersecting_boxes_occlude = false;
-    ObjectMapBuilder b(opts);
-    b.setMap(mapOf({twin, dup, behind}));
-    b.visibility(cameraAt(0, 0, 0), 0, active, candidate);
-    EXPECT_TRUE(active[0]);
-    EXPECT_TRUE(active[1]);
-    EXPECT_FALSE(active[2]);
+    EXPECT_EQ(activeWith(opts), (std::vector<bool>{true, true, false}));
     // the renderer with groups: visible pixels of the grouped pair are all their covered pixels
     VisibilityRenderer r;
     std::vector<BoxView> views;
