@@ -171,6 +171,23 @@ TEST(ObjectMapBuilder, TentativeObjectsStayOutOfTheConfirmedMap) {
     opts.min_confirmed_matches = 1;
     b.options() = opts;
     EXPECT_EQ(b.confirmedMap().objects.size(), 1u);
+
+    // Objects of the map the builder is given (a ground-truth map: one "detection" each) are
+    // established content, not tentative ones.
+    simp::world::ObjectMapData given;
+    given.class_names = classes;
+    given.class_noise.resize(1);
+    simp::world::MapObject table;
+    table.id = 7;
+    table.class_id = 0;
+    table.box = truth[0].box;
+    table.n_match = 1;
+    given.objects.push_back(table);
+    ObjectMapBuilder updating(test::testOptions());
+    updating.setFloorPlan(kGrid, {});
+    updating.setMap(given);
+    ASSERT_EQ(updating.confirmedMap().objects.size(), 1u);
+    EXPECT_EQ(updating.confirmedMap().objects[0].id, 7);
 }
 
 TEST(ObjectMapBuilder, DetectionOutsideTheBuildingIsRejected) {

@@ -285,6 +285,20 @@ TEST(CObjectMap, InsertObservationBuildsTheMapWithLibsMapping) {
     }
 }
 
+TEST(CObjectMap, InsertingIntoALoadedMapKeepsItsObjects) {
+    // A ground-truth map (one "detection" per object) updated by detections: its objects are
+    // content, not tentative objects of the builder (min_confirmed_matches applies to new ones).
+    const auto gt = test::smallMap();
+    ASSERT_EQ(gt.objects.size(), 5u);
+    CObjectMap map;
+    map.setData(gt);
+    const TPose2D truth(1.0, 0.5, 0.4);
+    const auto o = test::detect(gt, truth, {1, 2}, 0.95f);
+    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
+    map.flushInsertions();
+    EXPECT_EQ(map.size(), 5u);
+}
+
 TEST(CObjectMap, SavesRepresentationAndVisualization) {
     CObjectMap map;
     map.setData(test::smallMap());

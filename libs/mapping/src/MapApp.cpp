@@ -155,8 +155,8 @@ void MapApp::run() {
     const BuilderStats& s = m_builder.stats();
     out << "simp-map: " << s.frames << " camera frames, " << s.detections << " detections (rejected: " << s.rejected_class
         << " class disabled, " << s.rejected_confidence << " confidence, " << s.rejected_range << " range, "
-        << s.rejected_room << " other room, " << s.rejected_outside << " outside the floor, " << s.rejected_invalid << " invalid), " << s.integrations
-        << " integrations, " << s.merged << " merges, " << s.added << " added, " << s.purged << " purged, "
+        << s.rejected_room << " other room, " << s.rejected_outside << " outside the floor, " << s.rejected_invalid
+        << " invalid), " << s.integrations << " integrations, " << s.merged << " merges, " << s.added << " added, " << s.purged << " purged, "
         << s.duplicates_merged << " duplicates merged\n";
     std::map<std::string, int> per_class;
     for (const auto& o : result.objects.objects) ++per_class[result.objects.class_names[o.class_id]];

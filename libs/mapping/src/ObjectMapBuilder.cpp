@@ -24,7 +24,6 @@ ObjectMapBuilder::ObjectMapBuilder(const TOptions& options) : m_options(options)
 
 void ObjectMapBuilder::setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms) {
     m_walls = WallGrid(floorplan);
-    m_enclosed_unknown_m2 = m_walls.enclosedUnknownArea_m2();
     if (!rooms.empty()) {
         m_rooms = rooms;
     } else {
@@ -54,6 +53,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     }
     m_g = std::move(g);
     m_next_id = max_id + 1;
+    m_first_built_id = m_next_id;
     m_local.clear();
     m_window_active.clear();
     m_window_candidates.clear();
@@ -65,9 +65,12 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
 
 world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
     world::ObjectMapData out = m_g;
-    out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(),
-                                     [&](const world::MapObject& o) { return o.n_match < m_options.min_confirmed_matches; }),
-                      out.objects.end());
+    // Objects of the map it was given (setMap) are established content; only those the builder
+    // made wait for their confirmation.
+    const auto tentative = [&](const world::MapObject& o) {
+        return o.id >= m_first_built_id && o.n_match < m_options.min_confirmed_matches;
+    };
+    out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), tentative), out.objects.end());
     return out;
 }
 
@@ -190,7 +193,7 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         // A centre outside the building (unknown space reached from the plan's border, behind the
         // outer wall) is a depth error: the room lookup's search radius would otherwise give it the
         // room next to it. Unknown islands inside (furniture drawn grey) are not outside.
-        if (!m_walls.empty() && m_walls.isOutside(o.box.center.x(), o.box.center.y())) {
+        if (m_walls.isOutside(o.box.center.x(), o.box.center.y())) {
             ++m_stats.rejected_outside;
             continue;
         }

@@ -154,7 +154,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
 bool ObjectMapBuilder::wallAlignmentActive() const {
     if (m_walls.empty() || m_options.wall_align == WallAlignMode::Off) return false;
     return m_options.wall_align == WallAlignMode::On ||
-           m_enclosed_unknown_m2 <= m_options.wall_align_max_enclosed_unknown_m2;
+           m_walls.enclosedUnknownArea_m2() <= m_options.wall_align_max_enclosed_unknown_m2;
 }
 
 geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D& box) const {

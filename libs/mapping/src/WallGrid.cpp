@@ -34,6 +34,7 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
     for (int cy = 0; cy < ny; ++cy)
         for (int cx = 0; cx < nx; ++cx)
             if (unknown(cy, cx) && reaches_border[static_cast<std::size_t>(labels(cy, cx))]) m_outside(cy, cx) = 255;
+    m_enclosed_unknown_m2 = cv::countNonZero(unknown & ~m_outside) * m_res * m_res;
 }
 
 bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool beyond_grid) const {
@@ -47,11 +48,6 @@ bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool be
 bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m, false); }
 
 bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m, false); }
-
-double WallGrid::enclosedUnknownArea_m2() const {
-    if (m_wall.empty()) return 0.0;
-    return cv::countNonZero(~(m_wall | m_free | m_outside)) * m_res * m_res;
-}
 
 bool WallGrid::isOutside(double x_m, double y_m) const { return cellIsSet(m_outside, x_m, y_m, true); }
 

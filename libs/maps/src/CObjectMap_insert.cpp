@@ -13,6 +13,7 @@ bool CObjectMap::internal_insertObservation(const mrpt::obs::CObservation& obs,
         // occlude and there are no rooms (use simp-map for that).
         m_builder = std::make_shared<simp::mapping::ObjectMapBuilder>(insertionOptions.mapping);
         m_builder->setMap(m_data);
+        m_synced_integrations = 0;
     }
     m_builder->insert(*objects, robotPose ? *robotPose : mrpt::poses::CPose3D());
     syncFromBuilder();
@@ -26,13 +27,13 @@ void CObjectMap::flushInsertions() {
 }
 
 void CObjectMap::syncFromBuilder() {
-    const simp::world::ObjectMapData built = m_builder->confirmedMap();
-    const bool changed = built.objects.size() != m_data.objects.size() ||
-                         built.class_names.size() != m_data.class_names.size() ||
-                         m_builder->stats().integrations > 0;
-    if (!changed) return;
+    // The builder's map changes when it integrates its local map (flush) or meets a new class name.
+    const std::size_t integrations = m_builder->stats().integrations;
+    if (integrations == m_synced_integrations && m_builder->map().class_names.size() == m_data.class_names.size())
+        return;
+    m_synced_integrations = integrations;
     std::lock_guard<std::mutex> lock(m_cache_mutex);
-    m_data = built;
+    m_data = m_builder->confirmedMap();
     m_model.reset();  // rebuilt (and validated) at the next likelihood evaluation
     m_warned_empty = false;
 }

@@ -69,7 +69,8 @@ class ObjectMapBuilder {
 
     /// The whole global map m_g, tentative objects included.
     const world::ObjectMapData& map() const { return m_g; }
-    /// The map to use: m_g without its tentative objects (fewer than min_confirmed_matches detections).
+    /// The map to use: m_g without its tentative objects, those the builder made that have fewer
+    /// than min_confirmed_matches detections (objects of the map given to setMap always stay).
     world::ObjectMapData confirmedMap() const;
     const std::vector<LocalObject>& localMap() const { return m_local; }
     const world::RoomMap& rooms() const { return m_rooms; }
@@ -123,9 +124,9 @@ class ObjectMapBuilder {
     /// Stamp and robot pose of the last inserted frame.
     std::optional<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose3D>> m_last_step;
     std::int64_t m_next_id = 1;
+    std::int64_t m_first_built_id = 1;  ///< ids below were given by setMap (never tentative)
 
     WallGrid m_walls;
-    double m_enclosed_unknown_m2 = 0;  ///< of m_walls (computed once in setFloorPlan)
     world::RoomMap m_rooms;
     VisibilityRenderer m_renderer;
     std::vector<geometry::Box3D> m_boxes_scratch;

@@ -30,7 +30,7 @@ class WallGrid {
     bool isOutside(double x_m, double y_m) const;
 
     /// Area (m^2) of the unknown cells enclosed by walls (not outside): furniture drawn into the plan.
-    double enclosedUnknownArea_m2() const;
+    double enclosedUnknownArea_m2() const { return m_enclosed_unknown_m2; }
 
     /// Distance (m) along the horizontal ray from `origin_m` in direction `dir` (need not be unit;
     /// only xy used) to the boundary of the first wall cell, or +infinity when none within max_dist_m.
@@ -46,6 +46,7 @@ class WallGrid {
     cv::Mat1b m_wall;
     cv::Mat1b m_free;     ///< 255 = known free space
     cv::Mat1b m_outside;  ///< 255 = unknown space connected to the border
+    double m_enclosed_unknown_m2 = 0;  ///< computed with m_outside
     double m_x_min = 0, m_y_min = 0, m_res = 0.05;
 };
 

@@ -161,6 +161,7 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     mutable bool m_warned_empty = false;
     /// Mapping state (local map, counters); reset by setData() and not copied with the map.
     std::shared_ptr<simp::mapping::ObjectMapBuilder> m_builder;
+    std::size_t m_synced_integrations = 0;  ///< builder integrations already copied into m_data
 };
 
 /// Applies a class list to a map: objects of other classes are dropped, class ids and class
