@@ -76,6 +76,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("wall_align_max_enclosed_unknown_m2 = -1", "wall_align_max_enclosed_unknown_m2");
     expectThrowNaming("class_wall_align_max_gap_m = board", "class_wall_align_max_gap_m");
     expectThrowNaming("class_wall_align_max_gap_m = board:-0.1", "board");
+    expectThrowNaming("tau_cots = 0.3", "tau_cots: unknown key");
     expectThrowNaming("wall_align_rays = 1", "wall_align_rays");
     expectThrowNaming("wall_align_max_yaw_rad = 2", "wall_align_max_yaw_rad");
     expectThrowNaming("wall_align_max_penetration_m = nan", "wall_align_max_penetration_m");
@@ -98,9 +99,15 @@ TEST(MappingOptions, WallAlignmentAndConfirmationKeys) {
         "wall_align_max_penetration_m = 0.15\n"
         "wall_align_max_yaw_rad = 0.1\n"
         "wall_align_max_residual_m = 0.05\n"
-        "wall_align_rays = 7\n");
+        "wall_align_rays = 7\n"
+        "remove_class_bias = false\n"
+        "hide_objects_in_walls = false\n");
     MappingOptions o;
+    EXPECT_TRUE(o.remove_class_bias);
+    EXPECT_TRUE(o.hide_objects_in_walls);
     o.loadFromConfigFile(ini, "mapping");
+    EXPECT_FALSE(o.remove_class_bias);
+    EXPECT_FALSE(o.hide_objects_in_walls);
     EXPECT_EQ(o.min_confirmed_matches, 5);
     const auto board = o.wallAlignmentOf("board");
     ASSERT_TRUE(board.has_value());

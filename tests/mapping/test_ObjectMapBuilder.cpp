@@ -331,6 +331,58 @@ TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
     EXPECT_EQ(run(true), 2u);
 }
 
+TEST(ObjectMapBuilder, TheClassBiasIsRemovedFromTheMapObjects) {
+    // Detections of a cabinet biased by the class model's mean: mu = (0.3, 0.1) m in the class
+    // noise frame (the box's own here: its y side is the longer one, yaw 0).
+    auto m0 = emptyMap();
+    simp::world::NoiseModel biased;
+    biased.mean_m = {0.3, 0.1};
+    biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
+    m0.class_noise[1] = biased;
+    const auto true_box = makeUprightBox({3.0, 2.0, 0.9}, {0.5, 1.0, 1.8}, 0.0);
+    auto seen_box = true_box;
+    seen_box.center.head<2>() += biased.mean_m;
+    auto run = [&](bool remove) {
+        auto opts = test::testOptions();
+        opts.remove_class_bias = remove;
+        ObjectMapBuilder b(opts);
+        b.setMap(m0);
+        std::mt19937 rng(3);
+        for (int s = 0; s < 8; ++s) {  // exact detections of the biased box from 8 poses
+            const mrpt::poses::CPose3D pose(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
+            insertAll(b, test::observe({{1, seen_box}}, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+        }
+        b.flush();
+        EXPECT_EQ(b.map().objects.size(), 1u);
+        return b.map().objects.empty() ? Eigen::Vector3d(1e9, 1e9, 1e9) : b.map().objects[0].box.center;
+    };
+    EXPECT_NEAR((run(true) - true_box.center).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((run(false) - seen_box.center).norm(), 0.0, 1e-9);
+}
+
+TEST(ObjectMapBuilder, ObjectsInsideAWallAreLeftOutOfTheOutputMap) {
+    // A chair detected on the line of the room's west wall (x = 0), which no furniture can stand in.
+    const std::vector<test::TrueObject> truth = {{2, makeUprightBox({0.0, 3.0, 0.45}, {0.5, 0.5, 0.9}, 0.0)},
+                                                 {2, makeUprightBox({2.0, 3.0, 0.45}, {0.5, 0.5, 0.9}, 0.0)}};
+    auto run = [&](bool hide) {
+        auto opts = test::testOptions();
+        opts.hide_objects_in_walls = hide;
+        ObjectMapBuilder b(opts);
+        b.setFloorPlan(test::makeFloorPlan(8, 6), {});
+        b.setMap(emptyMap());
+        std::mt19937 rng(5);
+        for (int s = 0; s < 8; ++s) {
+            const mrpt::poses::CPose3D pose(3.0 + 0.25 * s, 3.2, 0, M_PI, 0, 0);
+            insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+        }
+        b.flush();
+        EXPECT_EQ(b.map().objects.size(), 2u);  // the builder keeps both
+        return b.confirmedMap().objects.size();
+    };
+    EXPECT_EQ(run(true), 1u);
+    EXPECT_EQ(run(false), 2u);
+}
+
 TEST(ObjectMapBuilder, OneOffDetectionOfAWindowDoesNotReachTheMap) {
     // A table seen in every step of a window, a cabinet (a false or stray detection) in one of 10.
     const std::vector<test::TrueObject> steady = {{0, makeUprightBox({5.0, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.0)}};

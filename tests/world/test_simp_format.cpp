@@ -283,6 +283,26 @@ TEST(SimpImport, CategoryOutOfRange) {
                 HasSubstr("global_variance.json: category[2]: expected a class index in [0, 14)"));
 }
 
+TEST(SimpImport, ClassMeanIsTheMeanOfItsObjectsOffsetsInTheClassFrame) {
+    // The table's mean pixel moves from (7.5, 6.5) to (8.5, 6.5): centre (7, 7) + (1.5, -0.5) px
+    // -> world offset (0.15, 0.05) m = its box frame (yaw 0). Its box is 0.8 x 0.6 m, so the class
+    // noise frame (y along the longer side) is turned by +90 deg: (0.05, -0.15) m. class_noise.csv
+    // says (0.5, -0.5) px = (0.05, -0.05) m; the objects' models are what detections follow.
+    const std::string dir = exampleCopy();
+    auto gv = readJson(dir + "/global_variance.json");
+    gv["mx"][0] = 8.5;
+    writeFile(dir + "/global_variance.json", gv.dump());
+    const World w = importSimpMap(dir);
+    ASSERT_TRUE(w.objects.class_noise[4].has_value());
+    EXPECT_NEAR(w.objects.class_noise[4]->mean_m.x(), 0.05, 1e-12);
+    EXPECT_NEAR(w.objects.class_noise[4]->mean_m.y(), -0.15, 1e-12);
+    // Its spread stays the file's: (2, 4) px at 0.1 m/px.
+    EXPECT_NEAR(w.objects.class_noise[4]->cov_m2(0, 0), 0.04, 1e-12);
+    EXPECT_NEAR(w.objects.class_noise[4]->cov_m2(1, 1), 0.16, 1e-12);
+    // The cabinet's mean pixel is its centre: its class mean is zero.
+    EXPECT_NEAR(w.objects.class_noise[9]->mean_m.norm(), 0.0, 1e-12);
+}
+
 TEST(SimpImport, ClassNoiseRowHalfFilled) {
     const std::string dir = exampleCopy();
     writeFile(dir + "/class_noise.csv", "category,mx,my,sx,sy,b\n0,1,2,,,\n");

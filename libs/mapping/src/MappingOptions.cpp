@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -103,6 +104,26 @@ std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::st
 }
 
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
+    // A misspelt key would silently leave its default in place.
+    static const std::set<std::string> kKnown = {
+        "trigger_dist_m", "trigger_angle_rad", "tau_cost", "tau_purge", "min_local_detections", "min_local_support",
+        "min_confirmed_matches", "merge_duplicates", "duplicate_tau_cost", "duplicate_max_distance_m",
+        "duplicate_center_radius_m", "class_duplicate_center_radius_m", "duplicate_min_overlap", "remove_class_bias",
+        "hide_objects_in_walls", "wall_align", "wall_align_max_enclosed_unknown_m2", "class_wall_align_max_gap_m",
+        "wall_align_max_penetration_m", "wall_align_max_yaw_rad", "wall_align_max_residual_m", "wall_align_rays",
+        "intersecting_boxes_occlude", "cost_covariance_scale", "cost_uses_noise_mean", "default_noise_sigma_m",
+        "truncation_threshold", "max_occluded_fraction", "zbuffer_downscale", "wall_depth_margin_m", "wall_cast_max_m",
+        "near_plane_m", "default_fx_px", "default_fy_px", "default_cx_px", "default_cy_px", "default_min_confidence",
+        "default_min_range_m", "default_max_range_m", "class_min_confidence", "class_min_range_m", "class_max_range_m",
+        "room_update_policy", "room_door_width_m", "room_min_area_m2", "room_search_radius_m"};
+    if (c.sectionExists(s)) {
+        std::vector<std::string> keys;
+        c.getAllKeys(s, keys);
+        for (const auto& k : keys)
+            if (!kKnown.count(k))
+                throw std::invalid_argument("mapping option [" + s + "] " + k +
+                                            ": unknown key (doc/mapping.md lists the keys; config_ini/mapping.ini shows each)");
+    }
     readDouble(c, s, "trigger_dist_m", trigger_dist_m);
     readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
     readDouble(c, s, "tau_cost", tau_cost);
@@ -115,6 +136,8 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
     readDouble(c, s, "duplicate_center_radius_m", duplicate_center_radius_m);
     readDouble(c, s, "duplicate_min_overlap", duplicate_min_overlap);
+    readBool(c, s, "remove_class_bias", remove_class_bias);
+    readBool(c, s, "hide_objects_in_walls", hide_objects_in_walls);
     {
         const std::string key = "class_duplicate_center_radius_m";
         const std::string text = c.read_string(s, key, "", false);
@@ -256,6 +279,8 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
     o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
     o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
+    o << "remove_class_bias     = " << (remove_class_bias ? "true" : "false") << "\n";
+    o << "hide_objects_in_walls = " << (hide_objects_in_walls ? "true" : "false") << "\n";
     o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
     o << "truncation_threshold  = " << truncation_threshold << "\n";
     o << "max_occluded_fraction = " << max_occluded_fraction << "\n";

@@ -8,6 +8,7 @@
 #include <simp/mapping/DetectionBox.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/mapping/RoomSegmentation.h>
+#include <simp/world/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
@@ -54,6 +55,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_g = std::move(g);
     m_next_id = max_id + 1;
     m_first_built_id = m_next_id;
+    m_estimates.clear();
     m_local.clear();
     m_window_active.clear();
     m_window_candidates.clear();
@@ -68,7 +70,11 @@ world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
     // Objects of the map it was given (setMap) are established content; only those the builder
     // made wait for their confirmation.
     const auto tentative = [&](const world::MapObject& o) {
-        return o.id >= m_first_built_id && o.n_match < m_options.min_confirmed_matches;
+        if (o.id < m_first_built_id) return false;
+        if (o.n_match < m_options.min_confirmed_matches) return true;
+        // An estimate inside a wall or outside the building is no furniture the robot could see.
+        const double x = o.box.center.x(), y = o.box.center.y();
+        return m_options.hide_objects_in_walls && planDrawsOnlyWalls() && (m_walls.isWall(x, y) || m_walls.isOutside(x, y));
     };
     out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), tentative), out.objects.end());
     return out;
@@ -129,6 +135,14 @@ world::NoiseModel ObjectMapBuilder::noiseOfClass(int class_id) const {
 world::NoiseModel ObjectMapBuilder::noiseOfObject(const world::MapObject& o) const {
     if (o.noise && o.noise->isValid()) return costNoise(o.noise);
     return noiseOfClass(o.class_id);
+}
+
+Eigen::Vector2d ObjectMapBuilder::classBiasOf(int class_id, const geometry::Box3D& box) const {
+    const auto c = static_cast<std::size_t>(class_id);
+    if (class_id < 0 || c >= m_g.class_noise.size() || !m_g.class_noise[c] || !m_g.class_noise[c]->isValid())
+        return Eigen::Vector2d::Zero();
+    // Eq. shiftdist: a detection's centre is offset by R_o mu from the object's (class noise frame).
+    return Eigen::Rotation2Dd(world::classNoiseFrameYaw(box)) * m_g.class_noise[c]->mean_m;
 }
 
 PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const {

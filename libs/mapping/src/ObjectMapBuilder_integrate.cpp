@@ -135,7 +135,8 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         if (best >= kNotDuplicate) break;
         world::MapObject& k = m_g.objects[keep];
         const world::MapObject& d = m_g.objects[drop];
-        k.box = mergeBoxes(k.box, k.n_match, d.box, d.n_match);
+        setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
+        m_estimates.erase(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
         k.room_id = roomOf(k.box.center.x(), k.box.center.y());
@@ -151,10 +152,13 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
     return n_removed;
 }
 
+bool ObjectMapBuilder::planDrawsOnlyWalls() const {
+    return !m_walls.empty() && m_walls.enclosedUnknownArea_m2() <= m_options.wall_align_max_enclosed_unknown_m2;
+}
+
 bool ObjectMapBuilder::wallAlignmentActive() const {
     if (m_walls.empty() || m_options.wall_align == WallAlignMode::Off) return false;
-    return m_options.wall_align == WallAlignMode::On ||
-           m_walls.enclosedUnknownArea_m2() <= m_options.wall_align_max_enclosed_unknown_m2;
+    return m_options.wall_align == WallAlignMode::On || planDrawsOnlyWalls();
 }
 
 geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D& box) const {
@@ -164,7 +168,34 @@ geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D
     return params ? alignToWalls(box, m_walls, *params) : box;
 }
 
+const geometry::Box3D& ObjectMapBuilder::estimateOf(const world::MapObject& o) const {
+    const auto it = m_estimates.find(o.id);
+    return it == m_estimates.end() ? o.box : it->second;
+}
+
+void ObjectMapBuilder::setEstimate(world::MapObject& o, const geometry::Box3D& estimate) {
+    if (!keepsEstimates()) {
+        o.box = estimate;  // aligned by alignToFloorPlan after the integration
+        return;
+    }
+    m_estimates[o.id] = estimate;
+    o.box = shownBox(o.class_id, estimate);
+}
+
+bool ObjectMapBuilder::keepsEstimates() const { return m_options.remove_class_bias; }
+
+geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
+    geometry::Box3D b = estimate;
+    b.center.head<2>() -= classBiasOf(class_id, b);
+    return alignedBox(class_id, b);
+}
+
 void ObjectMapBuilder::alignToFloorPlan(world::MapObject& o) const {
+    if (keepsEstimates()) {
+        o.box = shownBox(o.class_id, estimateOf(o));
+        o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+        return;
+    }
     o.box = alignedBox(o.class_id, o.box);
     o.room_id = roomOf(o.box.center.x(), o.box.center.y());
 }
@@ -179,8 +210,10 @@ void ObjectMapBuilder::flush() {
     }
     ++m_stats.integrations;
     if (m_options.merge_duplicates) mergeLocalDuplicates();
-    // Floor-plan prior on the local map too, so that association compares like with like.
-    for (auto& l : m_local) l.box = alignedBox(l.class_id, l.box);
+    // Floor-plan prior on the local map too, so that association compares like with like
+    // (aligned with aligned; otherwise means of detections with means of detections).
+    if (!keepsEstimates())
+        for (auto& l : m_local) l.box = alignedBox(l.class_id, l.box);
 
     std::unordered_map<std::int64_t, std::size_t> index_of;
     for (std::size_t k = 0; k < m_g.objects.size(); ++k) index_of[m_g.objects[k].id] = k;
@@ -205,7 +238,7 @@ void ObjectMapBuilder::flush() {
                     cost(r, c) = kForbiddenCost;
                     continue;
                 }
-                cost(r, c) = associationCost(o.box, noiseOfObject(o), locals[r]->box);
+                cost(r, c) = associationCost(estimateOf(o), noiseOfObject(o), locals[r]->box);
             }
         assignment = geometry::solveAssignment(cost);
     }
@@ -218,7 +251,7 @@ void ObjectMapBuilder::flush() {
         if (c >= 0 && cost(r, c) < m_options.tau_cost) {
             // Merge: weighted centre, dimensions and SVD-projected rotation; n_match summed.
             world::MapObject& o = m_g.objects[cands[c]];
-            o.box = mergeBoxes(o.box, o.n_match, l.box, l.n_match);
+            setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             matched.insert(o.id);
@@ -227,9 +260,9 @@ void ObjectMapBuilder::flush() {
             world::MapObject o;
             o.id = m_next_id++;
             o.class_id = l.class_id;
-            o.box = l.box;
             o.n_match = l.n_match;
             o.n_skip = 0;
+            setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             added.push_back(o);
             ++m_stats.added;
@@ -245,6 +278,8 @@ void ObjectMapBuilder::flush() {
         return o.n_skip > 0 && static_cast<double>(o.n_match) / o.n_skip < m_options.tau_purge;
     };
     const std::size_t before = m_g.objects.size();
+    for (const auto& o : m_g.objects)
+        if (purge(o)) m_estimates.erase(o.id);
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());

@@ -4,6 +4,7 @@
 #include <mrpt/config/CConfigFile.h>
 #include <simp/geometry/Box3D.h>
 #include <simp/world/JsonRead.h>
+#include <simp/world/NoiseFrame.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/SimpPixels.h>
 
@@ -133,6 +134,27 @@ double chooseYaw(const RectangleFit& fit, const std::optional<ClassNoisePx>& cls
     double yaw = candidates[best];
     if (yaw > kPi / 2) yaw -= kPi;  // keep (-pi/2, pi/2]
     return yaw;
+}
+
+
+// The authors derive each object's model in global_variance.json from its class model, but the
+// class means of class_noise.csv are not in the frame those objects use (the y axis is flipped
+// for most classes, the desk's mean is turned by 90 deg), and the objects' models are what the
+// detections follow. The class mean becomes the mean of the objects' offsets in the class noise
+// frame (simp::world::classNoiseFrameYaw), as simp-stats learns it, so that a mapper that removes
+// the class bias (doc/mapping.md "Detector bias") removes the one its detections have.
+void classMeansFromObjects(ObjectMapData& map) {
+    std::vector<Eigen::Vector2d> sum(map.class_names.size(), Eigen::Vector2d::Zero());
+    std::vector<int> count(map.class_names.size(), 0);
+    for (const MapObject& o : map.objects) {
+        if (!o.noise) continue;
+        const Eigen::Vector2d world = Eigen::Rotation2Dd(geometry::yawOf(o.box)) * o.noise->mean_m;
+        sum[static_cast<std::size_t>(o.class_id)] += Eigen::Rotation2Dd(-classNoiseFrameYaw(o.box)) * world;
+        ++count[static_cast<std::size_t>(o.class_id)];
+    }
+    for (std::size_t c = 0; c < map.class_names.size(); ++c)
+        if (c < map.class_noise.size() && map.class_noise[c] && count[c] > 0)
+            map.class_noise[c]->mean_m = sum[c] / count[c];
 }
 
 }  // namespace
@@ -283,6 +305,7 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         o.room_id = roomOfBox(w.rooms, o.box);
         w.objects.objects.push_back(o);
     }
+    classMeansFromObjects(w.objects);
     validateObjectMap(w.objects, gv_path);
     return w;
 }

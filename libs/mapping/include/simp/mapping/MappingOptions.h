@@ -72,6 +72,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
     double duplicateCenterRadiusOf(const std::string& class_name) const;
     /// @}
+    /// @}
     /// I_active: do intersecting map boxes occlude each other? false: boxes that intersect in 3D
     /// are treated as one group that does not hide itself (duplicates become active, get n_skip
     /// and are purged). Project option; measured in doc/results.md.
@@ -86,6 +87,17 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// predictions, so the detector's bias cancels (and mu's direction depends on which of the 4
     /// equivalent box frames an object has).
     bool cost_uses_noise_mean = false;
+    /// Remove the detector's class bias (doc/mapping.md "Detector bias"): the builder keeps each
+    /// object's mean of detections as its state (association and merging compare like with like)
+    /// and its map box is that mean minus the class noise model's mean offset R_o mu (Eq.
+    /// shiftdist, class noise frame of the mean), then aligned to the walls. The sensor model adds
+    /// R_o mu to a map object; a map of raw means would carry the bias twice. false: the paper's
+    /// map of means, aligned in place.
+    bool remove_class_bias = true;
+    /// On a floor plan that draws only walls (see wall_align auto), an object whose box centre lies
+    /// in a wall cell or outside the building is left out of the output map (confirmedMap): no
+    /// furniture stands there, and the builder cannot see it to purge it.
+    bool hide_objects_in_walls = true;
     double default_noise_sigma_m = 0.2;  ///< isotropic sigma (m, b = 2) of C_cen for classes without a noise model
     /// @}
 

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <set>
+#include <unordered_map>
 #include <vector>
 
 namespace simp::mapping {
@@ -81,9 +82,13 @@ class ObjectMapBuilder {
     /// Room id at a world point: the room map's, else the nearest non-zero id within
     /// room_search_radius_m; 0 when there is no room map or none is near.
     int roomOf(double x_m, double y_m) const;
+
     /// Whether the floor-plan prior applies: wall_align on, or auto and the floor plan draws no
     /// furniture (WallGrid::enclosedUnknownArea_m2() <= wall_align_max_enclosed_unknown_m2).
     bool wallAlignmentActive() const;
+    /// The floor plan draws walls only, no furniture (enclosed unknown area <=
+    /// wall_align_max_enclosed_unknown_m2); false without a floor plan.
+    bool planDrawsOnlyWalls() const;
     /// The camera of an observation in the world (intrinsics of the observation, else the defaults).
     PinholeCamera cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const;
 
@@ -100,6 +105,8 @@ class ObjectMapBuilder {
     /// with its mean zeroed unless cost_uses_noise_mean.
     world::NoiseModel costNoise(const std::optional<world::NoiseModel>& model) const;
     world::NoiseModel noiseOfClass(int class_id) const;
+    /// The class noise model's mean offset mu of a detection box, in the world (zero without a model).
+    Eigen::Vector2d classBiasOf(int class_id, const geometry::Box3D& box) const;
     world::NoiseModel noiseOfObject(const world::MapObject& o) const;
     void insertIntoLocalMap(const std::vector<LocalObject>& detections);
     /// Eq. costfunc cost of a same-class pair when the duplicate rules (MappingOptions) make it one
@@ -125,6 +132,14 @@ class ObjectMapBuilder {
     std::optional<std::pair<mrpt::Clock::time_point, mrpt::poses::CPose3D>> m_last_step;
     std::int64_t m_next_id = 1;
     std::int64_t m_first_built_id = 1;  ///< ids below were given by setMap (never tentative)
+    /// remove_class_bias: each built object's mean of detections, its state for association and
+    /// merging; its box in m_g is shownBox(mean). Absent (objects of setMap, option off): the box.
+    std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
+    const geometry::Box3D& estimateOf(const world::MapObject& o) const;
+    bool keepsEstimates() const;
+    /// The map box of a mean of detections: minus the class bias, aligned to the walls.
+    geometry::Box3D shownBox(int class_id, const geometry::Box3D& estimate) const;
+    void setEstimate(world::MapObject& o, const geometry::Box3D& estimate);
 
     WallGrid m_walls;
     world::RoomMap m_rooms;
