@@ -358,6 +358,22 @@ TEST(ObjectMapBuilder, TheClassBiasIsRemovedFromTheMapObjects) {
     };
     EXPECT_NEAR((run(true) - true_box.center).norm(), 0.0, 1e-9);
     EXPECT_NEAR((run(false) - seen_box.center).norm(), 0.0, 1e-9);
+
+    // A given map (a ground-truth or reloaded map) holds the object where it is: the same biased
+    // detections confirm it in place instead of pulling it by mu again.
+    auto given = m0;
+    given.objects.push_back(mapObject(7, 1, true_box, 50));
+    ObjectMapBuilder b(test::testOptions());
+    b.setMap(given);
+    std::mt19937 rng(3);
+    for (int s = 0; s < 8; ++s) {
+        const mrpt::poses::CPose3D pose(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
+        insertAll(b, test::observe({{1, seen_box}}, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+    }
+    b.flush();
+    ASSERT_EQ(b.map().objects.size(), 1u);
+    EXPECT_GT(b.map().objects[0].n_match, 50);
+    EXPECT_NEAR((b.map().objects[0].box.center - true_box.center).norm(), 0.0, 1e-9);
 }
 
 TEST(ObjectMapBuilder, ObjectsInsideAWallAreLeftOutOfTheOutputMap) {

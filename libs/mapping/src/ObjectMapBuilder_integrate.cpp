@@ -168,9 +168,14 @@ geometry::Box3D ObjectMapBuilder::alignedBox(int class_id, const geometry::Box3D
     return params ? alignToWalls(box, m_walls, *params) : box;
 }
 
-const geometry::Box3D& ObjectMapBuilder::estimateOf(const world::MapObject& o) const {
+geometry::Box3D ObjectMapBuilder::estimateOf(const world::MapObject& o) const {
     const auto it = m_estimates.find(o.id);
-    return it == m_estimates.end() ? o.box : it->second;
+    if (it != m_estimates.end()) return it->second;
+    geometry::Box3D b = o.box;
+    // An object of a given map (setMap: a loaded or ground-truth map, a deserialized CObjectMap)
+    // is where the object is; its detections are expected R_o mu away from it.
+    if (keepsEstimates()) b.center.head<2>() += classBiasOf(o.class_id, b);
+    return b;
 }
 
 void ObjectMapBuilder::setEstimate(world::MapObject& o, const geometry::Box3D& estimate) {

@@ -133,9 +133,10 @@ class ObjectMapBuilder {
     std::int64_t m_next_id = 1;
     std::int64_t m_first_built_id = 1;  ///< ids below were given by setMap (never tentative)
     /// remove_class_bias: each built object's mean of detections, its state for association and
-    /// merging; its box in m_g is shownBox(mean). Absent (objects of setMap, option off): the box.
+    /// merging; its box in m_g is shownBox(mean). Absent (objects of setMap, option off): the box
+    /// plus the class bias (the box minus nothing when the option is off).
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
-    const geometry::Box3D& estimateOf(const world::MapObject& o) const;
+    geometry::Box3D estimateOf(const world::MapObject& o) const;
     bool keepsEstimates() const;
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
     geometry::Box3D shownBox(int class_id, const geometry::Box3D& estimate) const;
