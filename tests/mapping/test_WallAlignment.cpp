@@ -172,6 +172,21 @@ TEST(ObjectMapBuilder, TentativeObjectsStayOutOfTheConfirmedMap) {
     b.options() = opts;
     EXPECT_EQ(b.confirmedMap().objects.size(), 1u);
 
+    // A burst from one viewpoint is no confirmation: 6 detections in one window stay tentative
+    // until the object is matched in min_confirmed_windows = 3 windows.
+    ObjectMapBuilder burst = builderOnTestFloor(test::testOptions(), classes[0]);
+    ASSERT_EQ(burst.options().min_confirmed_windows, 3);
+    for (int window = 1; window <= 3; ++window) {
+        for (int k = 0; k < (window == 1 ? 6 : 1); ++k)
+            for (const auto& o : test::observe(truth, classes, pose, rng, test::DetectionNoise{0, 0, 0})) burst.insert(o, pose);
+        burst.flush();
+        ASSERT_EQ(burst.map().objects.size(), 1u);
+        EXPECT_EQ(burst.confirmedMap().objects.size(), window >= 3 ? 1u : 0u) << window << " windows";
+    }
+    EXPECT_EQ(burst.map().objects[0].n_match, 8);
+    burst.options().min_confirmed_windows = 1;
+    EXPECT_EQ(burst.confirmedMap().objects.size(), 1u);
+
     // Objects of the map the builder is given (a ground-truth map: one "detection" each) are
     // established content, not tentative ones.
     simp::world::ObjectMapData given;

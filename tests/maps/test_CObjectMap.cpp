@@ -270,9 +270,10 @@ TEST(CObjectMap, InsertObservationBuildsTheMapWithLibsMapping) {
     // Two detections each: tentative objects (min_confirmed_matches = 3), not yet map content.
     EXPECT_EQ(map.mapBuilder()->map().objects.size(), 2u);
     EXPECT_EQ(map.size(), 0u);
-    // Confirmed from two detections on: the same insertions make the map content.
+    // Confirmed from two detections in one window on: the same insertions make the map content.
     CObjectMap map2;
     map2.insertionOptions.mapping.min_confirmed_matches = 2;
+    map2.insertionOptions.mapping.min_confirmed_windows = 1;
     EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
     EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
     map2.flushInsertions();

@@ -107,7 +107,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     // A misspelt key would silently leave its default in place.
     static const std::set<std::string> kKnown = {
         "trigger_dist_m", "trigger_angle_rad", "tau_cost", "tau_purge", "min_local_detections", "min_local_support",
-        "min_confirmed_matches", "merge_duplicates", "duplicate_tau_cost", "duplicate_max_distance_m",
+        "min_confirmed_matches", "min_confirmed_windows", "merge_duplicates", "duplicate_tau_cost", "duplicate_max_distance_m",
         "duplicate_center_radius_m", "class_duplicate_center_radius_m", "duplicate_min_overlap", "remove_class_bias",
         "hide_objects_in_walls", "wall_align", "wall_align_max_enclosed_unknown_m2", "class_wall_align_max_gap_m",
         "wall_align_max_penetration_m", "wall_align_max_yaw_rad", "wall_align_max_residual_m", "wall_align_rays",
@@ -131,6 +131,7 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readInt(c, s, "min_local_detections", min_local_detections);
     readDouble(c, s, "min_local_support", min_local_support);
     readInt(c, s, "min_confirmed_matches", min_confirmed_matches);
+    readInt(c, s, "min_confirmed_windows", min_confirmed_windows);
     readBool(c, s, "merge_duplicates", merge_duplicates);
     readDouble(c, s, "duplicate_tau_cost", duplicate_tau_cost);
     readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
@@ -216,6 +217,7 @@ void MappingOptions::validate() const {
     requireRange(min_local_detections, 1, 1e6, "min_local_detections");
     requireRange(min_local_support, 0.0, 1e3, "min_local_support");
     requireRange(min_confirmed_matches, 1, 1e6, "min_confirmed_matches");
+    requireRange(min_confirmed_windows, 1, 1e6, "min_confirmed_windows");
     requireRange(duplicate_tau_cost, 0.0, 1.0, "duplicate_tau_cost");
     requireRange(duplicate_max_distance_m, 0.0, 1e3, "duplicate_max_distance_m");
     requireRange(duplicate_center_radius_m, 0.0, 1e3, "duplicate_center_radius_m");
@@ -263,6 +265,7 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "min_local_detections  = " << min_local_detections << "\n";
     o << "min_local_support     = " << min_local_support << " detections per time step\n";
     o << "min_confirmed_matches = " << min_confirmed_matches << " detections\n";
+    o << "min_confirmed_windows = " << min_confirmed_windows << " integration windows\n";
     o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
     o << "duplicate_tau_cost    = " << duplicate_tau_cost << "\n";
     o << "duplicate_max_distance_m = " << duplicate_max_distance_m << " m\n";

@@ -56,6 +56,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_next_id = max_id + 1;
     m_first_built_id = m_next_id;
     m_estimates.clear();
+    m_windows_matched.clear();
     m_local.clear();
     m_window_active.clear();
     m_window_candidates.clear();
@@ -72,6 +73,10 @@ world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
     const auto tentative = [&](const world::MapObject& o) {
         if (o.id < m_first_built_id) return false;
         if (o.n_match < m_options.min_confirmed_matches) return true;
+        if (m_options.min_confirmed_windows > 1) {
+            const auto it = m_windows_matched.find(o.id);
+            if (it == m_windows_matched.end() || it->second < m_options.min_confirmed_windows) return true;
+        }
         // An estimate inside a wall or outside the building is no furniture the robot could see.
         const double x = o.box.center.x(), y = o.box.center.y();
         return m_options.hide_objects_in_walls && planDrawsOnlyWalls() && (m_walls.isWall(x, y) || m_walls.isOutside(x, y));

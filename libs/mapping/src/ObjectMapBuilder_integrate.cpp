@@ -137,6 +137,8 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_estimates.erase(d.id);
+        m_windows_matched[k.id] += m_windows_matched[d.id];
+        m_windows_matched.erase(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
         k.room_id = roomOf(k.box.center.x(), k.box.center.y());
@@ -290,6 +292,7 @@ void ObjectMapBuilder::flush() {
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
     // Floor-plan prior: objects updated in this window stand flush against their wall.
     for (const auto& o : added) matched.insert(o.id);
+    for (const std::int64_t id : matched) ++m_windows_matched[id];
     for (auto& o : m_g.objects)
         if (matched.count(o.id)) alignToFloorPlan(o);
     if (m_options.merge_duplicates) {

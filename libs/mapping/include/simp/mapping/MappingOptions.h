@@ -51,6 +51,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// tentative, kept by the builder to gather matches. One-off stray detections that no later
     /// window re-observes (an object never active again is never purged) stay out. 1 = off.
     int min_confirmed_matches = 3;
+    /// ... and has been matched (or made) in this many integration windows, i.e. from viewpoints
+    /// trigger_dist_m / trigger_angle_rad apart: one viewpoint's error repeats over its frames, so
+    /// a burst of detections from one place is no confirmation. 1 = off.
+    int min_confirmed_windows = 3;
     /// Project addition: after each integration, pairs of same-class objects (of the local map,
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.

@@ -136,6 +136,7 @@ class ObjectMapBuilder {
     /// merging; its box in m_g is shownBox(mean). Absent (objects of setMap, option off): the box
     /// plus the class bias (the box minus nothing when the option is off).
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
+    std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     bool keepsEstimates() const;
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
