@@ -173,17 +173,19 @@ TEST(ObjectMapBuilder, TentativeObjectsStayOutOfTheConfirmedMap) {
     EXPECT_EQ(b.confirmedMap().objects.size(), 1u);
 
     // A burst from one viewpoint is no confirmation: 6 detections in one window stay tentative
-    // until the object is matched in min_confirmed_windows = 3 windows.
+    // until the object is matched in min_confirmed_windows = 2 windows.
     ObjectMapBuilder burst = builderOnTestFloor(test::testOptions(), classes[0]);
-    ASSERT_EQ(burst.options().min_confirmed_windows, 3);
+    ASSERT_EQ(burst.options().min_confirmed_windows, 2);
     for (int window = 1; window <= 3; ++window) {
         for (int k = 0; k < (window == 1 ? 6 : 1); ++k)
             for (const auto& o : test::observe(truth, classes, pose, rng, test::DetectionNoise{0, 0, 0})) burst.insert(o, pose);
         burst.flush();
         ASSERT_EQ(burst.map().objects.size(), 1u);
-        EXPECT_EQ(burst.confirmedMap().objects.size(), window >= 3 ? 1u : 0u) << window << " windows";
+        EXPECT_EQ(burst.confirmedMap().objects.size(), window >= 2 ? 1u : 0u) << window << " windows";
     }
     EXPECT_EQ(burst.map().objects[0].n_match, 8);
+    burst.options().min_confirmed_windows = 4;
+    EXPECT_EQ(burst.confirmedMap().objects.size(), 0u);
     burst.options().min_confirmed_windows = 1;
     EXPECT_EQ(burst.confirmedMap().objects.size(), 1u);
 

@@ -54,7 +54,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// ... and has been matched (or made) in this many integration windows, i.e. from viewpoints
     /// trigger_dist_m / trigger_angle_rad apart: one viewpoint's error repeats over its frames, so
     /// a burst of detections from one place is no confirmation. 1 = off.
-    int min_confirmed_windows = 3;
+    int min_confirmed_windows = 2;
     /// Project addition: after each integration, pairs of same-class objects (of the local map,
     /// and of the map objects seen in the window) whose Eq. costfunc cost is below tau_cost are
     /// merged, so that duplicates made by early noisy detections do not persist.
