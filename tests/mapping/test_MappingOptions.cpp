@@ -76,7 +76,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("wall_align_max_enclosed_unknown_m2 = -1", "wall_align_max_enclosed_unknown_m2");
     expectThrowNaming("class_wall_align_max_gap_m = board", "class_wall_align_max_gap_m");
     expectThrowNaming("class_wall_align_max_gap_m = board:-0.1", "board");
-    expectThrowNaming("tau_cots = 0.3", "tau_cots: unknown key");
+    expectThrowNaming("tau_cots = 0.3", "unknown key 'tau_cots' in section [mapping]");
     expectThrowNaming("wall_align_rays = 1", "wall_align_rays");
     expectThrowNaming("wall_align_max_yaw_rad = 2", "wall_align_max_yaw_rad");
     expectThrowNaming("wall_align_max_penetration_m = nan", "wall_align_max_penetration_m");

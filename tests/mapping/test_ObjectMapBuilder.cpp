@@ -33,6 +33,23 @@ const simp::world::MapObject* closest(const simp::world::ObjectMapData& m, int c
     return best;
 }
 
+/// An empty map whose cabinets (class 1) have a class model with mean `mu` and 0.1 m sigma.
+simp::world::ObjectMapData mapWithCabinetBias(const Eigen::Vector2d& mu) {
+    auto m = emptyMap();
+    simp::world::NoiseModel biased;
+    biased.mean_m = mu;
+    biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
+    m.class_noise[1] = biased;
+    return m;
+}
+
+/// Exact (noise-free) detections of `truth` from each robot pose, inserted into `b`.
+void insertExact(ObjectMapBuilder& b, const std::vector<test::TrueObject>& truth,
+                 const std::vector<mrpt::poses::CPose3D>& poses, unsigned seed) {
+    std::mt19937 rng(seed);
+    for (const auto& pose : poses) insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
+}
+
 }  // namespace
 
 TEST(ObjectMapBuilder, StaticSceneConvergesToTheTrueBoxes) {
@@ -307,11 +324,7 @@ TEST(ObjectMapBuilder, InvalidMapIsRejected) {
 TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
     // A class model with a 0.5 m bias and 0.1 m sigma: with mu in C_cen two identical detections
     // would cost 0.5 * (1 - exp(-0.5 * 25)) ~ 0.5 > tau_cost and never merge.
-    auto m0 = emptyMap();
-    simp::world::NoiseModel biased;
-    biased.mean_m = {0.5, 0.0};
-    biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
-    m0.class_noise[1] = biased;
+    const auto m0 = mapWithCabinetBias({0.5, 0.0});
     const std::vector<test::TrueObject> truth = {{1, makeUprightBox({3.0, 0.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)}};
     auto run = [&](bool use_mean) {
         auto opts = test::testOptions();
@@ -319,11 +332,7 @@ TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
         opts.merge_duplicates = false;
         ObjectMapBuilder b(opts);
         b.setMap(m0);
-        std::mt19937 rng(1);
-        for (const double x : {0.0, 0.3}) {  // two windows, exact detections
-            const mrpt::poses::CPose3D pose(x, 0, 0, 0, 0, 0);
-            insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
-        }
+        insertExact(b, truth, {mrpt::poses::CPose3D(0.0, 0, 0, 0, 0, 0), mrpt::poses::CPose3D(0.3, 0, 0, 0, 0, 0)}, 1);  // two windows
         b.flush();
         return b.map().objects.size();
     };
@@ -334,24 +343,19 @@ TEST(ObjectMapBuilder, TheDetectorBiasCancelsBetweenPredictions) {
 TEST(ObjectMapBuilder, TheClassBiasIsRemovedFromTheMapObjects) {
     // Detections of a cabinet biased by the class model's mean: mu = (0.3, 0.1) m in the class
     // noise frame (the box's own here: its y side is the longer one, yaw 0).
-    auto m0 = emptyMap();
-    simp::world::NoiseModel biased;
-    biased.mean_m = {0.3, 0.1};
-    biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
-    m0.class_noise[1] = biased;
+    const Eigen::Vector2d mu(0.3, 0.1);
+    const auto m0 = mapWithCabinetBias(mu);
     const auto true_box = makeUprightBox({3.0, 2.0, 0.9}, {0.5, 1.0, 1.8}, 0.0);
     auto seen_box = true_box;
-    seen_box.center.head<2>() += biased.mean_m;
+    seen_box.center.head<2>() += mu;
+    std::vector<mrpt::poses::CPose3D> poses;  // 8 windows
+    for (int s = 0; s < 8; ++s) poses.emplace_back(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
     auto run = [&](bool remove) {
         auto opts = test::testOptions();
         opts.remove_class_bias = remove;
         ObjectMapBuilder b(opts);
         b.setMap(m0);
-        std::mt19937 rng(3);
-        for (int s = 0; s < 8; ++s) {  // exact detections of the biased box from 8 poses
-            const mrpt::poses::CPose3D pose(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
-            insertAll(b, test::observe({{1, seen_box}}, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
-        }
+        insertExact(b, {{1, seen_box}}, poses, 3);
         b.flush();
         EXPECT_EQ(b.map().objects.size(), 1u);
         return b.map().objects.empty() ? Eigen::Vector3d(1e9, 1e9, 1e9) : b.map().objects[0].box.center;
@@ -365,11 +369,7 @@ TEST(ObjectMapBuilder, TheClassBiasIsRemovedFromTheMapObjects) {
     given.objects.push_back(mapObject(7, 1, true_box, 50));
     ObjectMapBuilder b(test::testOptions());
     b.setMap(given);
-    std::mt19937 rng(3);
-    for (int s = 0; s < 8; ++s) {
-        const mrpt::poses::CPose3D pose(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
-        insertAll(b, test::observe({{1, seen_box}}, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
-    }
+    insertExact(b, {{1, seen_box}}, poses, 3);
     b.flush();
     ASSERT_EQ(b.map().objects.size(), 1u);
     EXPECT_GT(b.map().objects[0].n_match, 50);
@@ -386,11 +386,9 @@ TEST(ObjectMapBuilder, ObjectsInsideAWallAreLeftOutOfTheOutputMap) {
         ObjectMapBuilder b(opts);
         b.setFloorPlan(test::makeFloorPlan(8, 6), {});
         b.setMap(emptyMap());
-        std::mt19937 rng(5);
-        for (int s = 0; s < 8; ++s) {
-            const mrpt::poses::CPose3D pose(3.0 + 0.25 * s, 3.2, 0, M_PI, 0, 0);
-            insertAll(b, test::observe(truth, kClasses, pose, rng, test::DetectionNoise{0, 0, 0}), pose);
-        }
+        std::vector<mrpt::poses::CPose3D> poses;
+        for (int s = 0; s < 8; ++s) poses.emplace_back(3.0 + 0.25 * s, 3.2, 0, M_PI, 0, 0);
+        insertExact(b, truth, poses, 5);
         b.flush();
         EXPECT_EQ(b.map().objects.size(), 2u);  // the builder keeps both
         return b.confirmedMap().objects.size();

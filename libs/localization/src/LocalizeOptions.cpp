@@ -1,4 +1,5 @@
 #include <simp/localization/LocalizeOptions.h>
+#include <simp/io/IniKeys.h>
 
 #include <mrpt/core/bits_math.h>
 
@@ -182,18 +183,8 @@ void MotionModelOptions::dumpToTextStream(std::ostream& out) const {
         << "minStdXY (m) = " << o.gaussianModel.minStdXY << ", minStdPHI (rad) = " << o.gaussianModel.minStdPHI << "\n";
 }
 
-void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                    const std::vector<std::string>& known, const std::string& file) {
-    if (!cfg.sectionExists(section)) return;
-    std::vector<std::string> keys;
-    cfg.getAllKeys(section, keys);
-    for (const auto& k : keys)
-        if (std::find(known.begin(), known.end(), k) == known.end())
-            throw std::invalid_argument(file + ": unknown key '" + k + "' in section [" + section +
-                                        "] (known keys: " + joined(known) + ")");
-}
-
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
+    using io::checkKnownKeys;
     checkKnownKeys(cfg, kExperiment,
                    {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
                     "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "prune_keeps_weight", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",

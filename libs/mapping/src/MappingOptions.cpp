@@ -1,10 +1,10 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/IniKeys.h>
 #include <simp/io/NameValueList.h>
 #include <simp/mapping/MappingOptions.h>
 
 #include <cmath>
 #include <ostream>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -104,26 +104,21 @@ std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::st
 }
 
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    // A misspelt key would silently leave its default in place.
-    static const std::set<std::string> kKnown = {
-        "trigger_dist_m", "trigger_angle_rad", "tau_cost", "tau_purge", "min_local_detections", "min_local_support",
-        "min_confirmed_matches", "min_confirmed_windows", "merge_duplicates", "duplicate_tau_cost", "duplicate_max_distance_m",
-        "duplicate_center_radius_m", "class_duplicate_center_radius_m", "duplicate_min_overlap", "remove_class_bias",
-        "hide_objects_in_walls", "wall_align", "wall_align_max_enclosed_unknown_m2", "class_wall_align_max_gap_m",
-        "wall_align_max_penetration_m", "wall_align_max_yaw_rad", "wall_align_max_residual_m", "wall_align_rays",
-        "intersecting_boxes_occlude", "cost_covariance_scale", "cost_uses_noise_mean", "default_noise_sigma_m",
-        "truncation_threshold", "max_occluded_fraction", "zbuffer_downscale", "wall_depth_margin_m", "wall_cast_max_m",
-        "near_plane_m", "default_fx_px", "default_fy_px", "default_cx_px", "default_cy_px", "default_min_confidence",
-        "default_min_range_m", "default_max_range_m", "class_min_confidence", "class_min_range_m", "class_max_range_m",
-        "room_update_policy", "room_door_width_m", "room_min_area_m2", "room_search_radius_m"};
-    if (c.sectionExists(s)) {
-        std::vector<std::string> keys;
-        c.getAllKeys(s, keys);
-        for (const auto& k : keys)
-            if (!kKnown.count(k))
-                throw std::invalid_argument("mapping option [" + s + "] " + k +
-                                            ": unknown key (doc/mapping.md lists the keys; config_ini/mapping.ini shows each)");
-    }
+    // A misspelt key would silently keep its default.
+    io::checkKnownKeys(c, s, {
+        "trigger_dist_m", "trigger_angle_rad", "tau_cost", "tau_purge", "min_local_detections",
+        "min_local_support", "min_confirmed_matches", "min_confirmed_windows", "merge_duplicates",
+        "duplicate_tau_cost", "duplicate_max_distance_m", "duplicate_center_radius_m",
+        "class_duplicate_center_radius_m", "duplicate_min_overlap", "remove_class_bias",
+        "hide_objects_in_walls", "wall_align", "wall_align_max_enclosed_unknown_m2",
+        "class_wall_align_max_gap_m", "wall_align_max_penetration_m", "wall_align_max_yaw_rad",
+        "wall_align_max_residual_m", "wall_align_rays", "intersecting_boxes_occlude", "cost_covariance_scale",
+        "cost_uses_noise_mean", "default_noise_sigma_m", "truncation_threshold", "max_occluded_fraction",
+        "zbuffer_downscale", "wall_depth_margin_m", "wall_cast_max_m", "near_plane_m", "default_fx_px",
+        "default_fy_px", "default_cx_px", "default_cy_px", "default_min_confidence", "default_min_range_m",
+        "default_max_range_m", "class_min_confidence", "class_min_range_m", "class_max_range_m",
+        "room_update_policy", "room_door_width_m", "room_min_area_m2", "room_search_radius_m"},
+                       "mapping options");
     readDouble(c, s, "trigger_dist_m", trigger_dist_m);
     readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
     readDouble(c, s, "tau_cost", tau_cost);

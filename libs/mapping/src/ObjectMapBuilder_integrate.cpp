@@ -136,9 +136,8 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         world::MapObject& k = m_g.objects[keep];
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
-        m_estimates.erase(d.id);
         m_windows_matched[k.id] += m_windows_matched[d.id];
-        m_windows_matched.erase(d.id);
+        forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
         k.room_id = roomOf(k.box.center.x(), k.box.center.y());
@@ -176,12 +175,12 @@ geometry::Box3D ObjectMapBuilder::estimateOf(const world::MapObject& o) const {
     geometry::Box3D b = o.box;
     // An object of a given map (setMap: a loaded or ground-truth map, a deserialized CObjectMap)
     // is where the object is; its detections are expected R_o mu away from it.
-    if (keepsEstimates()) b.center.head<2>() += classBiasOf(o.class_id, b);
+    if (m_options.remove_class_bias) b.center.head<2>() += classBiasOf(o.class_id, b);
     return b;
 }
 
 void ObjectMapBuilder::setEstimate(world::MapObject& o, const geometry::Box3D& estimate) {
-    if (!keepsEstimates()) {
+    if (!m_options.remove_class_bias) {
         o.box = estimate;  // aligned by alignToFloorPlan after the integration
         return;
     }
@@ -189,7 +188,10 @@ void ObjectMapBuilder::setEstimate(world::MapObject& o, const geometry::Box3D& e
     o.box = shownBox(o.class_id, estimate);
 }
 
-bool ObjectMapBuilder::keepsEstimates() const { return m_options.remove_class_bias; }
+void ObjectMapBuilder::forget(std::int64_t id) {
+    m_estimates.erase(id);
+    m_windows_matched.erase(id);
+}
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
     geometry::Box3D b = estimate;
@@ -198,11 +200,6 @@ geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& 
 }
 
 void ObjectMapBuilder::alignToFloorPlan(world::MapObject& o) const {
-    if (keepsEstimates()) {
-        o.box = shownBox(o.class_id, estimateOf(o));
-        o.room_id = roomOf(o.box.center.x(), o.box.center.y());
-        return;
-    }
     o.box = alignedBox(o.class_id, o.box);
     o.room_id = roomOf(o.box.center.x(), o.box.center.y());
 }
@@ -219,7 +216,7 @@ void ObjectMapBuilder::flush() {
     if (m_options.merge_duplicates) mergeLocalDuplicates();
     // Floor-plan prior on the local map too, so that association compares like with like
     // (aligned with aligned; otherwise means of detections with means of detections).
-    if (!keepsEstimates())
+    if (!m_options.remove_class_bias)
         for (auto& l : m_local) l.box = alignedBox(l.class_id, l.box);
 
     std::unordered_map<std::int64_t, std::size_t> index_of;
@@ -286,15 +283,17 @@ void ObjectMapBuilder::flush() {
     };
     const std::size_t before = m_g.objects.size();
     for (const auto& o : m_g.objects)
-        if (purge(o)) m_estimates.erase(o.id);
+        if (purge(o)) forget(o.id);
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
-    // Floor-plan prior: objects updated in this window stand flush against their wall.
     for (const auto& o : added) matched.insert(o.id);
     for (const std::int64_t id : matched) ++m_windows_matched[id];
-    for (auto& o : m_g.objects)
-        if (matched.count(o.id)) alignToFloorPlan(o);
+    // Floor-plan prior: objects updated in this window stand flush against their wall (with
+    // remove_class_bias, setEstimate already gave them their aligned map box).
+    if (!m_options.remove_class_bias)
+        for (auto& o : m_g.objects)
+            if (matched.count(o.id)) alignToFloorPlan(o);
     if (m_options.merge_duplicates) {
         // As the authors' mergeObjects: every object of the robot's room (all objects without a
         // room filter), not only those seen now, so twins left by earlier windows still merge.

@@ -56,11 +56,6 @@ struct MotionModelOptions : public mrpt::config::CLoadableOptions {
     void dumpToTextStream(std::ostream& out) const override;
 };
 
-/// Throws std::invalid_argument naming `file`, the section and the key when `section`
-/// holds a key that is not in `known` (MRPT would silently ignore it).
-void checkKnownKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                    const std::vector<std::string>& known, const std::string& file);
-
 /// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);
 

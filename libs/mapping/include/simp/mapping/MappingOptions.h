@@ -76,7 +76,6 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
     double duplicateCenterRadiusOf(const std::string& class_name) const;
     /// @}
-    /// @}
     /// I_active: do intersecting map boxes occlude each other? false: boxes that intersect in 3D
     /// are treated as one group that does not hide itself (duplicates become active, get n_skip
     /// and are purged). Project option; measured in doc/results.md.

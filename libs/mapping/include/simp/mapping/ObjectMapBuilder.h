@@ -138,7 +138,7 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     geometry::Box3D estimateOf(const world::MapObject& o) const;
-    bool keepsEstimates() const;
+    void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
     geometry::Box3D shownBox(int class_id, const geometry::Box3D& estimate) const;
     void setEstimate(world::MapObject& o, const geometry::Box3D& estimate);
