@@ -20,17 +20,16 @@ TEST(SkippedDetections, KeepTheirWorldBoxesAtTheUpdatePose) {
     d.box_in_camera.center = Eigen::Vector3d(0.3, 0.2, 3.0);
     d.box_in_camera.size = Eigen::Vector3d(1.2, 0.7, 0.8);
     o->addDetection(d);
-    mrpt::obs::CSensoryFrame skipped_frame;
-    skipped_frame.insert(o);
-
     SkippedDetections buf;
-    buf.add(skipped_frame, motion_to_frame);
+    buf.add({{o, {0.25}}}, motion_to_frame);
     EXPECT_EQ(buf.size(), 1u);
-    const auto merged = buf.merge(mrpt::obs::CSensoryFrame::Create(), motion_to_update);
+    const auto merged = buf.merge({}, motion_to_update);
     EXPECT_EQ(buf.size(), 0u);
-    ASSERT_EQ(merged->size(), 1u);
-    const auto moved = merged->getObservationByClass<simp::obs::CObservationObjects3D>();
+    ASSERT_EQ(merged.size(), 1u);
+    const auto moved = merged[0].obs;
     ASSERT_TRUE(moved);
+    ASSERT_EQ(merged[0].weights.size(), 1u);  // the detection keeps its weight
+    EXPECT_EQ(merged[0].weights[0], 0.25);
 
     const mrpt::poses::CPose3D world_T_frame(last_update + motion_to_frame);
     const mrpt::poses::CPose3D world_T_update(last_update + motion_to_update);
@@ -44,6 +43,8 @@ TEST(SkippedDetections, KeepTheirWorldBoxesAtTheUpdatePose) {
 
 TEST(SkippedDetections, EmptyBufferReturnsTheFrameItself) {
     SkippedDetections buf;
-    auto sf = mrpt::obs::CSensoryFrame::Create();
-    EXPECT_EQ(buf.merge(sf, mrpt::poses::CPose2D(1, 0, 0)), sf);
+    auto o = simp::obs::CObservationObjects3D::Create();
+    const auto merged = buf.merge({{o, {}}}, mrpt::poses::CPose2D(1, 0, 0));
+    ASSERT_EQ(merged.size(), 1u);
+    EXPECT_EQ(merged[0].obs, o);
 }

@@ -53,17 +53,23 @@ std::vector<StampedPose2D> readTum(const std::string& path) {
     return out;
 }
 
+std::string tumHeader() { return "# t x y z qx qy qz qw\n"; }
+
+std::string tumLine(const StampedPose2D& p) {
+    std::ostringstream f;
+    const double h = 0.5 * p.pose.phi;
+    f << std::fixed << std::setprecision(6) << p.t_s << " " << std::setprecision(6) << p.pose.x << " " << p.pose.y
+      << " 0 0 0 " << std::setprecision(9) << std::sin(h) << " " << std::cos(h) << "\n";
+    return f.str();
+}
+
 void writeTum(const std::string& path, const std::vector<StampedPose2D>& poses) {
     const auto parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
     std::ofstream f(path);
     if (!f) throw std::runtime_error("TUM file '" + path + "': cannot open for writing");
-    f << "# t x y z qx qy qz qw\n" << std::setprecision(9);
-    for (const auto& p : poses) {
-        const double h = 0.5 * p.pose.phi;
-        f << std::fixed << std::setprecision(6) << p.t_s << " " << std::setprecision(6) << p.pose.x << " "
-          << p.pose.y << " 0 0 0 " << std::setprecision(9) << std::sin(h) << " " << std::cos(h) << "\n";
-    }
+    f << tumHeader();
+    for (const auto& p : poses) f << tumLine(p);
     if (!f) throw std::runtime_error("TUM file '" + path + "': write failed");
 }
 

@@ -1,22 +1,25 @@
 #include <simp/localization/FrameLikelihood.h>
 
-#include <simp/obs/CObservationObjects3D.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace simp::localization {
+namespace {
 
-std::size_t frameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
+/// Eq. singw of one group of observations: out_log[i] = (1/K) sum_k w_k log p_k(x_i).
+std::size_t groupLogLikelihoods(const maps::CObjectMap& map, const std::vector<const WeightedObservation*>& group,
                                 const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
     std::fill(out_log, out_log + n, 0.0);
     std::size_t K = 0;
-    for (const auto& o : sf) {
-        const auto* det = dynamic_cast<const simp::obs::CObservationObjects3D*>(o.get());
-        if (det == nullptr || det->empty()) continue;
-        map.accumulateLogLikelihoods(*det, poses, n, out_log, K);
+    for (const auto* o : group) {
+        if (o->obs->empty()) continue;
+        if (!o->weights.empty() && o->weights.size() != o->obs->size())
+            throw std::invalid_argument("Eq. singw: " + std::to_string(o->weights.size()) + " weights for " +
+                                        std::to_string(o->obs->size()) + " detections");
+        map.accumulateLogLikelihoods(*o->obs, poses, n, out_log, K, o->weights.empty() ? nullptr : o->weights.data());
     }
     if (K == 0) return 0;
     // Eq. singw: prod_k p_k^(1/K)  ->  (1/K) sum_k log p_k
@@ -31,25 +34,50 @@ std::size_t frameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CS
     return K;
 }
 
-std::size_t perFrameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
-                                   const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
-    std::vector<mrpt::Clock::time_point> stamps;
+}  // namespace
+
+std::vector<WeightedObservation> objectObservations(const mrpt::obs::CSensoryFrame& sf) {
+    std::vector<WeightedObservation> out;
     for (const auto& o : sf)
-        if (std::find(stamps.begin(), stamps.end(), o->timestamp) == stamps.end()) stamps.push_back(o->timestamp);
-    if (stamps.size() <= 1) return frameLogLikelihoods(map, sf, poses, n, out_log);
+        if (auto det = std::dynamic_pointer_cast<simp::obs::CObservationObjects3D>(o)) out.push_back({det, {}});
+    return out;
+}
+
+std::size_t updateLogLikelihoods(const maps::CObjectMap& map, const std::vector<WeightedObservation>& observations,
+                                 bool per_frame, const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+    std::vector<mrpt::Clock::time_point> stamps;
+    if (per_frame)
+        for (const auto& o : observations)
+            if (std::find(stamps.begin(), stamps.end(), o.obs->timestamp) == stamps.end())
+                stamps.push_back(o.obs->timestamp);
+    std::vector<const WeightedObservation*> group;
+    if (stamps.size() <= 1) {
+        for (const auto& o : observations) group.push_back(&o);
+        return groupLogLikelihoods(map, group, poses, n, out_log);
+    }
     std::fill(out_log, out_log + n, 0.0);
-    std::vector<double> group(n);
+    std::vector<double> group_log(n);
     std::size_t K_total = 0;
     for (const auto& t : stamps) {
-        mrpt::obs::CSensoryFrame g;
-        for (const auto& o : sf)
-            if (o->timestamp == t) g.insert(o);
-        const std::size_t K = frameLogLikelihoods(map, g, poses, n, group.data());
+        group.clear();
+        for (const auto& o : observations)
+            if (o.obs->timestamp == t) group.push_back(&o);
+        const std::size_t K = groupLogLikelihoods(map, group, poses, n, group_log.data());
         if (K == 0) continue;
         K_total += K;
-        for (std::size_t i = 0; i < n; ++i) out_log[i] += group[i];  // product over frames
+        for (std::size_t i = 0; i < n; ++i) out_log[i] += group_log[i];  // product over frames
     }
     return K_total;
+}
+
+std::size_t frameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
+                                const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+    return updateLogLikelihoods(map, objectObservations(sf), false, poses, n, out_log);
+}
+
+std::size_t perFrameLogLikelihoods(const maps::CObjectMap& map, const mrpt::obs::CSensoryFrame& sf,
+                                   const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+    return updateLogLikelihoods(map, objectObservations(sf), true, poses, n, out_log);
 }
 
 }  // namespace simp::localization

@@ -8,9 +8,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/random/RandomGenerators.h>
 #include <simp/localization/FreeSpace.h>
-#include <simp/localization/ObjectMcl.h>
 #include <simp/localization/RawlogSequence.h>
-#include <simp/localization/SkippedDetections.h>
 #include <simp/localization/TrajectoryImage.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
@@ -30,6 +28,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+/// --particles above this is refused: 5e5 particles already take seconds per update (doc/localization.md).
+constexpr long long kMaxParticles = 500000;
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -45,15 +45,6 @@ std::shared_ptr<maps::CObjectMap> makeObjectMap(const mrpt::config::CConfigFileB
     if (!map)
         throw std::invalid_argument(file + ": [MetricMap] creates no semanticObjectMap (set semanticObjectMap_count=1)");
     return map;
-}
-
-/// The action of one filter step: the odometry increment with the [MotionModel] noise.
-mrpt::obs::CActionCollection makeAction(const mrpt::poses::CPose2D& increment, const MotionModelOptions& motion) {
-    mrpt::obs::CActionRobotMovement2D mv;
-    mv.computeFromOdometry(increment, motion.mrpt_options);
-    mrpt::obs::CActionCollection acts;
-    acts.insert(mv);
-    return acts;
 }
 
 void writeParticles(const std::string& path, const mrpt::slam::CMonteCarloLocalization2D& pdf) {
@@ -95,16 +86,6 @@ std::string describeError(const std::exception& e) {
     return out.empty() ? all : out;
 }
 
-mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizeApp::defaultPfOptions() {
-    mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
-    o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
-    o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
-    o.adaptiveSampleSize = false;
-    o.BETA = 0.5;
-    o.sampleSize = 1;
-    return o;
-}
-
 void LocalizeApp::initialize(const std::vector<std::string>& args) {
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
@@ -126,8 +107,14 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     TCLAP::ValueArg<long long> a_particles("", "particles", "particle count (overrides the .ini; default 5000)", false,
                                            0, "N", cmd);
     TCLAP::ValueArg<long long> a_seed("", "seed", "random seed (overrides the .ini; default 0)", false, 0, "S", cmd);
+    TCLAP::ValueArg<std::string> a_initial(
+        "", "initial-pose",
+        "x,y,phi[,sigma_xy,sigma_phi] (m, rad): track from this pose (default spread 0.2 m, 0.1 rad) instead of "
+        "localizing globally",
+        false, "", "POSE", cmd);
     TCLAP::SwitchArg a_quiet("", "quiet", "no progress or log output on stderr", cmd, false);
     RecordingOutput recorder;
+    delete cmd.getOutput();  // TCLAP does not free its default output once another is set
     cmd.setOutput(&recorder);
 
     std::vector<const char*> args;
@@ -151,17 +138,20 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
         const std::string m = a_method.getValue();
         if (std::find(sensorModelNames().begin(), sensorModelNames().end(), m) == sensorModelNames().end())
             throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use simp, edt, d or o)");
-        experiment.sensor_model = m;
+        options.experiment.sensor_model = m;
     }
     if (a_particles.isSet()) {
-        if (a_particles.getValue() <= 0) throw std::invalid_argument("simp-localize: --particles must be > 0");
-        experiment.particles_count = static_cast<std::size_t>(a_particles.getValue());
+        if (a_particles.getValue() <= 0 || a_particles.getValue() > kMaxParticles)
+            throw std::invalid_argument("simp-localize: --particles must be in [1, " + std::to_string(kMaxParticles) +
+                                        "]");
+        options.experiment.particles_count = static_cast<std::size_t>(a_particles.getValue());
     }
     if (a_seed.isSet()) {
         if (a_seed.getValue() < 0 || a_seed.getValue() > 4294967295LL)
             throw std::invalid_argument("simp-localize: --seed must be in [0, 2^32)");
-        experiment.seed = static_cast<std::uint32_t>(a_seed.getValue());
+        options.experiment.seed = static_cast<std::uint32_t>(a_seed.getValue());
     }
+    if (a_initial.isSet()) initial_pose = parseInitialPose(a_initial.getValue());
 }
 
 void LocalizeApp::loadConfig() {
@@ -170,13 +160,17 @@ void LocalizeApp::loadConfig() {
     params.setContent(mrpt::io::file_get_contents(config_path));
     validateIniKeys(params, config_path);
     try {
-        experiment.loadFromConfigFile(params, "LocalizationExperiment");
-        motion.loadFromConfigFile(params, "MotionModel");
-        if (params.sectionExists("PF_options")) pf_options.loadFromConfigFile(params, "PF_options");
+        options.experiment.loadFromConfigFile(params, "LocalizationExperiment");
+        options.motion.loadFromConfigFile(params, "MotionModel");
+        if (params.sectionExists("PF_options")) options.pf.loadFromConfigFile(params, "PF_options");
+        options.kld.loadFromConfigFile(params, "KLD_options");
+        loadStateParams(params, "State", options.state);
+        loadNoveltyParams(params, "DetectionNovelty", options.novelty);
+        loadResettingParams(params, "SensorResetting", options.resetting);
     } catch (const std::exception& e) {
         throw std::invalid_argument(config_path + ": " + describeError(e));
     }
-    if (pf_options.PF_algorithm == mrpt::bayes::CParticleFilter::pfOptimalProposal)
+    if (options.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfOptimalProposal)
         throw std::invalid_argument(config_path +
                                     ": [PF_options] PF_algorithm = pfOptimalProposal is not implemented by MRPT's "
                                     "CMonteCarloLocalization2D (use pfStandardProposal)");
@@ -186,11 +180,17 @@ void LocalizeApp::run() {
     if (help_requested) return;
     std::ostream& out = log ? *log : std::cerr;
     const bool verbose = show_progress || log != nullptr;
+    const auto& experiment = options.experiment;
 
     // Inputs.
     if (!fs::is_directory(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     world::World world = world::loadWorld(world_dir);
-    const RawlogSequence seq = loadRawlogSequence(rawlog_path);
+    const RawlogSequence seq = loadRawlogSequence(rawlog_path, RawlogTail::AllowTruncated);
+    truncated_at_entry = seq.truncated_at_entry;
+    if (truncated_at_entry > 0 && verbose)
+        out << "simp-localize: warning: rawlog '" << rawlog_path << "' ends with an incomplete entry "
+            << truncated_at_entry << " (still being written?): localizing the " << seq.frames.size()
+            << " complete frames before it\n";
 
     std::shared_ptr<maps::CObjectMap> map;
     try {
@@ -207,106 +207,118 @@ void LocalizeApp::run() {
     if (world.objects.objects.empty()) out << "simp-localize: warning: the object map of '" << world_dir << "' is empty\n";
 
     // The filter.
-    mrpt::random::getRandomGenerator().randomize(experiment.seed);
-    auto free_space = std::make_shared<FreeSpace>(world.floorplan, experiment.free_cells_threshold);
-    ObjectMcl mcl(map);
-    mcl.options.KLD_params.loadFromConfigFile(params, "KLD_options");
-    mcl.prune_outside_free_space = experiment.prune_outside_free_space;
-    mcl.prune_keeps_weight = experiment.prune_keeps_weight;
-    mcl.singw_per_frame = experiment.singw_per_frame;
-    mcl.recovery_alpha_slow = experiment.recovery_alpha_slow;
-    mcl.recovery_alpha_fast = experiment.recovery_alpha_fast;
-    mcl.setFreeSpace(free_space);
-    mcl.resetUniformFreeSpace(&world.floorplan, experiment.free_cells_threshold,
-                              static_cast<int>(experiment.particles_count));
-    mrpt::bayes::CParticleFilter pf;
-    pf.m_options = pf_options;
-
+    // A fresh generator, not randomize(): MRPT 2.5 keeps the std::normal_distribution's cached
+    // second value across randomize(), so a run would depend on the draws of the one before it.
+    mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(experiment.seed);
+    Localizer localizer(map, world.floorplan, options);
+    if (initial_pose) {
+        const auto& p = *initial_pose;
+        try {
+            localizer.startAt({p[0], p[1], p[2]}, p[3], p[4]);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("simp-localize: --initial-pose: ") + e.what() + " of '" +
+                                        world_dir + "'");
+        }
+    } else {
+        localizer.startGlobal();
+    }
     if (verbose) {
         out << "simp-localize: " << seq.frames.size() << " frames (" << seq.format << ") from '" << rawlog_path
             << "', " << world.objects.objects.size() << " objects, sensor model " << sensor_model_used << ", "
-            << experiment.particles_count << " particles over " << free_space->freeArea() << " m^2 free, seed "
-            << experiment.seed << "\n";
+            << experiment.particles_count << " particles, seed " << experiment.seed
+            << (initial_pose ? ", tracking from --initial-pose" : ", global localization") << "\n";
     }
 
+    // Outputs, written as the frames are processed.
+    fs::create_directories(out_dir);
+    const fs::path o(out_dir);
+    std::ofstream tum_file((o / "estimate.tum").string()), steps_file((o / "steps.csv").string());
+    if (!tum_file || !steps_file) throw std::runtime_error("cannot write into '" + out_dir + "'");
+    tum_file << io::tumHeader();
+    steps_file << stepsCsvHeader() << "\n";
     steps.clear();
     estimate.clear();
-    mrpt::poses::CPose2D pending;  // odometry not yet applied to the particles
-    SkippedDetections skipped;     // detections of the frames since the last update
+    bool reporting = experiment.report_from == ReportFrom::Start;
     const auto t_start = Clock::now();
     auto t_last_progress = t_start;
     const bool tty = isatty(fileno(stderr)) != 0;  // \r-updated line on a terminal, lines otherwise
     for (std::size_t f = 0; f < seq.frames.size(); ++f) {
         const auto t0 = Clock::now();
         const SequenceFrame& frame = seq.frames[f];
-        pending = pending + frame.odometry_increment;
-        // Motion trigger (paper: d_xy, d_theta): the first frame, then after enough motion.
-        const bool trigger = f == 0 || pending.norm() >= experiment.update_min_d_xy ||
-                             std::abs(pending.phi()) >= experiment.update_min_d_phi;
-        StepRecord rec;
-        rec.t_s = frame.t_s;
-        if (trigger) {
-            mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
-            const auto sf = skipped.merge(frame.observations, pending);
-            if (f == 0 && pending.norm() == 0 && pending.phi() == 0) {
-                pf.executeOn(mcl, nullptr, sf.get(), &stats);
-            } else {
-                const auto acts = makeAction(pending, motion);
-                pf.executeOn(mcl, &acts, sf.get(), &stats);
-            }
-            pending = mrpt::poses::CPose2D();
-            rec.updated = true;
-            rec.detections = mcl.lastDetectionCount();
-            rec.pruned = mcl.lastPrunedCount();
-            rec.ess = stats.ESS_beforeResample * static_cast<double>(mcl.size());
-        } else if (experiment.keep_skipped_detections) {
-            skipped.add(*frame.observations, pending);
-        }
-        const ParticleSummary s = summarizeParticles(mcl, experiment);
-        // The pose now: the filter's estimate moved by the odometry it has not applied yet.
-        rec.estimate = (mrpt::poses::CPose2D(s.estimate) + pending).asTPose();
-        rec.mean = s.mean;
-        rec.cov = s.cov;
-        rec.cluster_weight = s.cluster_weight;
-        rec.particles = s.particle_count;
-        if (!trigger) rec.ess = s.ess;
+        StepRecord rec = localizer.step(frame.t_s, frame.odometry_increment, *frame.observations);
         rec.seconds = secondsSince(t0);
         steps.push_back(rec);
-        estimate.push_back({rec.t_s, rec.estimate});
+        steps_file << stepsCsvLine(rec);
+        reporting = reporting || rec.state == LocalizationState::Localized;
+        if (reporting) {
+            estimate.push_back({rec.t_s, rec.estimate});
+            tum_file << io::tumLine(estimate.back());
+        }
 
         const bool last_frame = f + 1 == seq.frames.size();
         if (show_progress && (secondsSince(t_last_progress) > (tty ? 0.5 : 5.0) || last_frame)) {
             t_last_progress = Clock::now();
+            tum_file.flush();
+            steps_file.flush();
             const double el = secondsSince(t_start);
-            char line[160];
-            std::snprintf(line, sizeof(line), "%ssimp-localize: %5.1f%% (%zu/%zu frames, %.1f frames/s, K=%zu)  ",
-                          tty ? "\r" : "",
-                          100.0 * (f + 1) / seq.frames.size(), f + 1, seq.frames.size(), (f + 1) / std::max(el, 1e-9),
-                          rec.detections);
+            char line[200];
+            std::snprintf(line, sizeof(line), "%ssimp-localize: %5.1f%% (%zu/%zu frames, %.1f frames/s, K=%zu, %s)  ",
+                          tty ? "\r" : "", 100.0 * (f + 1) / seq.frames.size(), f + 1, seq.frames.size(),
+                          (f + 1) / std::max(el, 1e-9), rec.detections, toString(rec.state).c_str());
             std::cerr << line << (last_frame || !tty ? "\n" : "") << std::flush;
         }
     }
+    tum_file.close();
+    steps_file.close();
+    if (!tum_file || !steps_file) throw std::runtime_error("error while writing into '" + out_dir + "'");
 
     final_particles.clear();
-    for (const auto& p : mcl.m_particles) final_particles.push_back(p.d);
-
-    // Outputs.
-    fs::create_directories(out_dir);
-    const std::string o = (fs::path(out_dir)).string();
-    io::writeTum((fs::path(o) / "estimate.tum").string(), estimate);
-    writeStepsCsv((fs::path(o) / "steps.csv").string(), steps);
-    if (experiment.write_particles) writeParticles((fs::path(o) / "final_particles.txt").string(), mcl);
+    for (const auto& p : localizer.filter().m_particles) final_particles.push_back(p.d);
+    if (experiment.write_particles) writeParticles((o / "final_particles.txt").string(), localizer.filter());
     if (experiment.write_png) {
         std::vector<mrpt::math::TPose2D> traj;
         for (const auto& e : estimate) traj.push_back(e.pose);
-        writeTrajectoryPng((fs::path(o) / "trajectory.png").string(), world.floorplan, world.objects, traj,
-                           final_particles);
+        writeTrajectoryPng((o / "trajectory.png").string(), world.floorplan, world.objects, traj, final_particles);
     }
     if (verbose) {
-        const auto& last = steps.back().estimate;
-        out << "simp-localize: final estimate (" << last.x << ", " << last.y << ", " << last.phi << ") in "
-            << secondsSince(t_start) << " s; wrote " << o << "/estimate.tum, steps.csv\n";
+        const auto& last = steps.back();
+        out << "simp-localize: final estimate (" << last.estimate.x << ", " << last.estimate.y << ", "
+            << last.estimate.phi << "), state " << toString(last.state) << ", in " << secondsSince(t_start)
+            << " s; wrote " << o.string() << "/estimate.tum (" << estimate.size() << " poses), steps.csv\n";
+        if (estimate.empty())
+            out << "simp-localize: warning: the filter never reached state 'localized': estimate.tum is empty "
+                   "([LocalizationExperiment] report_from = start writes every frame)\n";
     }
+}
+
+std::array<double, 5> parseInitialPose(const std::string& text) {
+    std::array<double, 5> v{0, 0, 0, 0.2, 0.1};
+    std::size_t count = 0, pos = 0;
+    while (pos <= text.size()) {
+        const auto comma = text.find(',', pos);
+        const std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        if (count >= 5) throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': more than 5 numbers");
+        std::size_t used = 0;
+        double x = 0;
+        try {
+            x = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(x))
+            throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': '" + item +
+                                        "' is not a finite number (expected x,y,phi[,sigma_xy,sigma_phi])");
+        v[count++] = x;
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    if (count != 3 && count != 5)
+        throw std::invalid_argument("simp-localize: --initial-pose '" + text +
+                                    "': expected 3 or 5 numbers x,y,phi[,sigma_xy,sigma_phi]");
+    if (v[3] < 0 || v[4] < 0 || v[3] > 100 || v[4] > 10)
+        throw std::invalid_argument("simp-localize: --initial-pose '" + text +
+                                    "': sigma_xy must be in [0, 100] m and sigma_phi in [0, 10] rad");
+    return v;
 }
 
 }  // namespace simp::localization

@@ -1,5 +1,6 @@
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/io/IniKeys.h>
+#include <simp/localization/Localizer.h>
 
 #include <mrpt/core/bits_math.h>
 
@@ -106,6 +107,17 @@ void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     if (bins != std::floor(bins) || bins > 360)
         throw std::invalid_argument(where(s, "cluster_phi_bins") + " must be an integer in [1, 360]");
     cluster_phi_bins = static_cast<int>(bins);
+    const double tmin = readPositive(cfg, s, "tracking_min_particles", static_cast<double>(tracking_min_particles), true);
+    if (tmin != std::floor(tmin) || tmin > 1e7)
+        throw std::invalid_argument(where(s, "tracking_min_particles") + " must be an integer in [0, 1e7]");
+    tracking_min_particles = static_cast<std::size_t>(tmin);
+    const std::string from = cfg.read_string(s, "report_from", report_from == ReportFrom::Localized ? "localized" : "start");
+    if (from == "localized")
+        report_from = ReportFrom::Localized;
+    else if (from == "start")
+        report_from = ReportFrom::Start;
+    else
+        throw std::invalid_argument(where(s, "report_from") + " = '" + from + "' is not one of localized, start");
     write_particles = readBool(cfg, s, "write_particles", write_particles);
     write_png = readBool(cfg, s, "write_png", write_png);
 }
@@ -128,7 +140,58 @@ void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
         << "cluster_radius_m         = " << cluster_radius_m << "\n"
         << "cluster_max_dphi (rad)   = " << cluster_max_dphi << "\n"
         << "cluster_cell_m           = " << cluster_cell_m << "\n"
-        << "cluster_phi_bins         = " << cluster_phi_bins << "\n";
+        << "cluster_phi_bins         = " << cluster_phi_bins << "\n"
+        << "tracking_min_particles   = " << tracking_min_particles << "\n"
+        << "report_from              = " << (report_from == ReportFrom::Localized ? "localized" : "start") << "\n";
+}
+
+namespace {
+double readFraction(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key, double def) {
+    const double v = readNumber(cfg, s, key, def);
+    if (v < 0 || v > 1) throw std::invalid_argument(where(s, key) + " = " + std::to_string(v) + " must be in [0, 1]");
+    return v;
+}
+std::size_t readCount(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
+                      std::size_t def) {
+    const double v = readPositive(cfg, s, key, static_cast<double>(def), false);
+    if (v != std::floor(v) || v > 1e6) throw std::invalid_argument(where(s, key) + " must be an integer in [1, 1e6]");
+    return static_cast<std::size_t>(v);
+}
+}  // namespace
+
+void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, StateParams& p) {
+    p.fit_window = readCount(cfg, s, "fit_window", p.fit_window);
+    p.fit_max_age_s = readPositive(cfg, s, "fit_max_age_s", p.fit_max_age_s, false);
+    p.fit_min_detections = readCount(cfg, s, "fit_min_detections", p.fit_min_detections);
+    if (p.fit_min_detections > p.fit_window)
+        throw std::invalid_argument(where(s, "fit_min_detections") + " must be <= fit_window");
+    p.explained_ratio = readPositive(cfg, s, "explained_ratio", p.explained_ratio, false);
+    p.localized_min_fit = readFraction(cfg, s, "localized_min_fit", p.localized_min_fit);
+    p.localized_min_weight = readFraction(cfg, s, "localized_min_weight", p.localized_min_weight);
+    p.localized_max_std_m = readPositive(cfg, s, "localized_max_std_m", p.localized_max_std_m, false);
+    p.localized_min_updates = readCount(cfg, s, "localized_min_updates", p.localized_min_updates);
+    p.lost_max_fit = readFraction(cfg, s, "lost_max_fit", p.lost_max_fit);
+    p.lost_min_weight = readFraction(cfg, s, "lost_min_weight", p.lost_min_weight);
+    if (p.lost_max_fit >= p.localized_min_fit)
+        throw std::invalid_argument(where(s, "lost_max_fit") + " must be smaller than localized_min_fit");
+}
+
+void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, DetectionNoveltyParams& p) {
+    p.decorrelation_distance_m = readPositive(cfg, s, "decorrelation_distance_m", p.decorrelation_distance_m, true);
+    p.min_weight = readFraction(cfg, s, "min_weight", p.min_weight);
+    if (!(p.min_weight > 0)) throw std::invalid_argument(where(s, "min_weight") + " must be in (0, 1]");
+    p.track_radius_m = readPositive(cfg, s, "track_radius_m", p.track_radius_m, false);
+    p.track_timeout_s = readPositive(cfg, s, "track_timeout_s", p.track_timeout_s, false);
+}
+
+void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, SensorResettingParams& p) {
+    p.global_fraction = readFraction(cfg, s, "global_fraction", p.global_fraction);
+    p.lost_fraction = readFraction(cfg, s, "lost_fraction", p.lost_fraction);
+    p.localized_fraction = readFraction(cfg, s, "localized_fraction", p.localized_fraction);
+    p.uniform_share = readFraction(cfg, s, "uniform_share", p.uniform_share);
+    p.sampler.position_std_m = readPositive(cfg, s, "position_std_m", p.sampler.position_std_m, true);
+    p.sampler.heading_std_rad = readPositive(cfg, s, "heading_std_rad", p.sampler.heading_std_rad, true);
+    p.sampler.square_ratio = readFraction(cfg, s, "square_ratio", p.sampler.square_ratio);
 }
 
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paperDefaults() {
@@ -188,7 +251,19 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
     checkKnownKeys(cfg, kExperiment,
                    {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
                     "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "prune_keeps_weight", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
-                    "cluster_cell_m", "cluster_phi_bins", "write_particles", "write_png"},
+                    "cluster_cell_m", "cluster_phi_bins", "tracking_min_particles", "report_from", "write_particles",
+                    "write_png"},
+                   file);
+    checkKnownKeys(cfg, "State",
+                   {"fit_window", "fit_max_age_s", "fit_min_detections", "explained_ratio", "localized_min_fit",
+                    "localized_min_weight", "localized_max_std_m", "localized_min_updates", "lost_max_fit",
+                    "lost_min_weight"},
+                   file);
+    checkKnownKeys(cfg, "DetectionNovelty", {"decorrelation_distance_m", "min_weight", "track_radius_m", "track_timeout_s"},
+                   file);
+    checkKnownKeys(cfg, "SensorResetting",
+                   {"global_fraction", "lost_fraction", "localized_fraction", "uniform_share", "position_std_m",
+                    "heading_std_rad", "square_ratio"},
                    file);
     checkKnownKeys(cfg, kMotion,
                    {"modelSelection", "a1", "a2", "a3", "a4", "minStdXY", "minStdPHI", "nParticlesCount",
@@ -212,7 +287,7 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
             checkKnownKeys(cfg, sec,
                            {"sensor_model", "eta", "confidence_thresholds", "default_confidence_threshold",
                             "mp_resolution_m", "mp_min_probability", "skip_classes_without_noise", "edt_sigma_m",
-                            "edt_max_distance_m", "edt_resolution_m"},
+                            "edt_max_distance_m", "edt_resolution_m", "noise_reference_range_m"},
                            file);
     }
     checkKnownKeys(cfg, "KLD_options",

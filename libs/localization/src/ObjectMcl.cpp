@@ -2,6 +2,7 @@
 
 #include <simp/localization/FrameLikelihood.h>
 
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <algorithm>
@@ -18,28 +19,91 @@ ObjectMcl::ObjectMcl(std::shared_ptr<const maps::CObjectMap> map, std::size_t nu
     setLoggerName("simp::localization::ObjectMcl");
 }
 
-void ObjectMcl::prediction_and_update_pfStandardProposal(
-    const mrpt::obs::CActionCollection* actions, const mrpt::obs::CSensoryFrame* sf,
-    const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {
-    // 1) Prediction only: MRPT draws from the action's motion model (and does KLD sampling).
+void ObjectMcl::predict(const mrpt::obs::CActionCollection* actions,
+                        const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {
+    // MRPT draws from the action's motion model (and does KLD sampling when enabled).
     mrpt::slam::CMonteCarloLocalization2D::prediction_and_update_pfStandardProposal(actions, nullptr, PF_options);
     m_last_pruned = 0;
     if (prune_outside_free_space && m_free_space) pruneOutsideFreeSpace(PF_options.max_loglikelihood_dyn_range);
     m_last_injected = 0;
     if (recovery_alpha_fast > 0.0 && m_free_space) injectRandomParticles();
+}
 
-    // 2) Update: all particles in one batch (Eq. singw over all cameras of the frame).
+std::size_t ObjectMcl::weigh(const std::vector<WeightedObservation>& observations, double pow_factor) {
     m_last_K = 0;
-    if (sf == nullptr) return;
     const std::size_t n = m_particles.size();
     m_poses.resize(n);
     m_log_lik.resize(n);
     for (std::size_t i = 0; i < n; ++i) m_poses[i] = m_particles[i].d;
-    m_last_K = singw_per_frame ? perFrameLogLikelihoods(*m_map, *sf, m_poses.data(), n, m_log_lik.data())
-                               : frameLogLikelihoods(*m_map, *sf, m_poses.data(), n, m_log_lik.data());
-    if (m_last_K == 0) return;
+    m_last_K = updateLogLikelihoods(*m_map, observations, singw_per_frame, m_poses.data(), n, m_log_lik.data());
+    if (m_last_K == 0) return 0;
     if (recovery_alpha_fast > 0.0) updateRecoveryAverages(m_log_lik.data(), n);
-    for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * PF_options.powFactor;
+    for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * pow_factor;
+    return m_last_K;
+}
+
+void ObjectMcl::prediction_and_update_pfStandardProposal(
+    const mrpt::obs::CActionCollection* actions, const mrpt::obs::CSensoryFrame* sf,
+    const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {
+    predict(actions, PF_options);
+    m_last_K = 0;
+    if (sf == nullptr) return;
+    weigh(objectObservations(*sf), PF_options.powFactor);
+}
+
+double ObjectMcl::meanLogWeight() const {
+    double max_lw = -std::numeric_limits<double>::infinity();
+    for (const auto& p : m_particles) max_lw = std::max(max_lw, p.log_w);
+    double sum_w = 0.0;
+    for (const auto& p : m_particles) sum_w += std::exp(p.log_w - max_lw);
+    return max_lw + std::log(sum_w / static_cast<double>(m_particles.size()));
+}
+
+std::size_t ObjectMcl::inject(const std::vector<mrpt::math::TPose2D>& poses) {
+    const std::size_t n = m_particles.size();
+    const std::size_t m = std::min(poses.size(), n);
+    if (m == 0) return 0;
+    const double mean_log_w = meanLogWeight();
+    // Every (n / m)-th particle: the replaced ones are an even sample of the set, so each
+    // hypothesis gives up the same share of its weight.
+    for (std::size_t j = 0; j < m; ++j) {
+        auto& p = m_particles[(j * n) / m];
+        p.d = poses[j];
+        p.log_w = mean_log_w;
+    }
+    m_last_injected += m;
+    return m;
+}
+
+void ObjectMcl::resampleTo(std::size_t n) {
+    if (n == 0) throw std::invalid_argument("ObjectMcl::resampleTo: zero particles");
+    const std::size_t m = m_particles.size();
+    double max_lw = -std::numeric_limits<double>::infinity();
+    for (const auto& p : m_particles) max_lw = std::max(max_lw, p.log_w);
+    std::vector<double> cdf(m);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < m; ++i) cdf[i] = (sum += std::exp(m_particles[i].log_w - max_lw));
+    const double step = sum / static_cast<double>(n);
+    double u = mrpt::random::getRandomGenerator().drawUniform(0.0, step);
+    std::vector<std::size_t> idx(n);
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < n; ++k, u += step) {
+        while (j + 1 < m && cdf[j] < u) ++j;
+        idx[k] = j;
+    }
+    performSubstitution(idx);
+    for (auto& p : m_particles) p.log_w = 0.0;
+}
+
+void ObjectMcl::resetAround(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad, std::size_t n) {
+    if (n == 0) throw std::invalid_argument("ObjectMcl::resetAround: zero particles");
+    auto& rng = mrpt::random::getRandomGenerator();
+    m_particles.resize(n);
+    for (auto& p : m_particles) {
+        p.d = mrpt::math::TPose2D(pose.x + rng.drawGaussian1D(0.0, sigma_xy_m), pose.y + rng.drawGaussian1D(0.0, sigma_xy_m),
+                                  mrpt::math::wrapToPi(pose.phi + rng.drawGaussian1D(0.0, sigma_phi_rad)));
+        p.log_w = 0.0;
+    }
 }
 
 double ObjectMcl::PF_SLAM_computeObservationLikelihoodForParticle(
@@ -93,12 +157,7 @@ void ObjectMcl::injectRandomParticles() {
     if (!(m_w_slow > 0.0) || m_particles.empty()) return;
     const double p_inject = std::max(0.0, 1.0 - m_w_fast / m_w_slow);
     if (p_inject <= 0.0) return;
-    // The new particles get the mean weight: log(sum_i w_i / N), computed with log-sum-exp.
-    double max_lw = -std::numeric_limits<double>::infinity();
-    for (const auto& p : m_particles) max_lw = std::max(max_lw, p.log_w);
-    double sum_w = 0.0;
-    for (const auto& p : m_particles) sum_w += std::exp(p.log_w - max_lw);
-    const double mean_log_w = max_lw + std::log(sum_w / static_cast<double>(m_particles.size()));
+    const double mean_log_w = meanLogWeight();  // the new particles get the mean weight
     auto& rng = mrpt::random::getRandomGenerator();
     for (auto& p : m_particles) {
         if (rng.drawUniform(0.0, 1.0) >= p_inject) continue;

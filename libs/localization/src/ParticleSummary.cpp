@@ -62,6 +62,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     if (opts.estimate_mode == EstimateMode::Mean) {
         s.estimate = s.mean;
         s.cluster_weight = 1.0;
+        s.cluster_cov = s.cov;
         return s;
     }
 
@@ -110,6 +111,14 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     if (cluster.sw > 0) {
         s.estimate = cluster.pose();
         s.cluster_weight = cluster.sw;
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto& p = pdf.m_particles[i].d;
+            const double dx = p.x - peak.x, dy = p.y - peak.y;
+            if (dx * dx + dy * dy > r2 || std::abs(mrpt::math::wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
+                continue;
+            const Eigen::Vector3d d(p.x - s.estimate.x, p.y - s.estimate.y, mrpt::math::wrapToPi(p.phi - s.estimate.phi));
+            s.cluster_cov += (w[i] / cluster.sw) * d * d.transpose();
+        }
     } else {
         s.estimate = peak;
         s.cluster_weight = seed.sw;

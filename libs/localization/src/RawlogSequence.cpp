@@ -115,7 +115,7 @@ std::string innermostMessage(const std::exception& e) {
 
 }  // namespace
 
-RawlogSequence loadRawlogSequence(const std::string& path) {
+RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     if (!mrpt::system::fileExists(path)) throw std::runtime_error("rawlog '" + path + "' does not exist");
     mrpt::io::CFileGZInputStream in;
     if (!in.open(path)) throw std::runtime_error("rawlog '" + path + "' cannot be opened");
@@ -130,6 +130,12 @@ RawlogSequence loadRawlogSequence(const std::string& path) {
         } catch (const mrpt::serialization::CExceptionEOF&) {
             break;  // a clean end: MRPT raises this only between objects
         } catch (const std::exception& e) {
+            // A tail cut short (nothing left after the failed entry) of a file still being written.
+            char probe = 0;
+            if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && in.Read(&probe, 1) == 0) {
+                seq.truncated_at_entry = seq.entries + 1;
+                break;
+            }
             throw std::runtime_error("rawlog '" + path + "' is corrupt or truncated at entry " +
                                      std::to_string(seq.entries) + ": " + innermostMessage(e));
         }

@@ -2,25 +2,21 @@
 
 namespace simp::localization {
 
-void SkippedDetections::add(const mrpt::obs::CSensoryFrame& sf, const mrpt::poses::CPose2D& motion_since_update) {
-    for (const auto& o : sf) {
-        auto det = std::dynamic_pointer_cast<simp::obs::CObservationObjects3D>(o);
-        if (det && !det->empty()) m_kept.emplace_back(det, motion_since_update);
-    }
+void SkippedDetections::add(const std::vector<WeightedObservation>& frame,
+                            const mrpt::poses::CPose2D& motion_since_update) {
+    for (const auto& o : frame)
+        if (o.obs && !o.obs->empty()) m_kept.emplace_back(o, motion_since_update);
 }
 
-mrpt::obs::CSensoryFrame::Ptr SkippedDetections::merge(const mrpt::obs::CSensoryFrame::Ptr& current,
-                                                       const mrpt::poses::CPose2D& motion_at_update) {
-    if (m_kept.empty()) return current;
-    auto out = mrpt::obs::CSensoryFrame::Create();
-    if (current)
-        for (const auto& o : *current) out->insert(o);
-    for (const auto& [det, motion] : m_kept) {
+std::vector<WeightedObservation> SkippedDetections::merge(const std::vector<WeightedObservation>& current,
+                                                          const mrpt::poses::CPose2D& motion_at_update) {
+    std::vector<WeightedObservation> out = current;
+    for (const auto& [kept, motion] : m_kept) {
         // Pose of the skipped frame's robot in the update's robot frame: P_u^-1 (+) P_j.
         const mrpt::poses::CPose2D update_T_frame = motion - motion_at_update;
-        auto moved = std::make_shared<simp::obs::CObservationObjects3D>(*det);
-        moved->setCameraPose(mrpt::poses::CPose3D(update_T_frame) + det->cameraPose());
-        out->insert(moved);
+        auto moved = std::make_shared<simp::obs::CObservationObjects3D>(*kept.obs);
+        moved->setCameraPose(mrpt::poses::CPose3D(update_T_frame) + kept.obs->cameraPose());
+        out.push_back({moved, kept.weights});
     }
     m_kept.clear();
     return out;

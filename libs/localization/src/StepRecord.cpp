@@ -1,15 +1,30 @@
 #include <simp/localization/StepRecord.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 namespace simp::localization {
 
 std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
-           "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds";
+           "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
+           "fit_detections,est_std_xy_m,est_std_phi_rad,injected";
+}
+
+std::string stepsCsvLine(const StepRecord& s) {
+    char line[640];
+    const double std_xy = std::sqrt(std::max(0.0, s.cluster_cov(0, 0) + s.cluster_cov(1, 1)));
+    const double std_phi = std::sqrt(std::max(0.0, s.cluster_cov(2, 2)));
+    std::snprintf(line, sizeof(line),
+                  "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6f,%zu,%.3f,%zu,%d,%zu,%.6f,%s,"
+                  "%.4f,%zu,%.6f,%.6f,%zu\n",
+                  s.t_s, s.estimate.x, s.estimate.y, s.estimate.phi, s.mean.x, s.mean.y, s.mean.phi, s.cov(0, 0),
+                  s.cov(0, 1), s.cov(1, 1), s.cov(0, 2), s.cov(1, 2), s.cov(2, 2), s.cluster_weight, s.particles, s.ess,
+                  s.detections, s.updated ? 1 : 0, s.pruned, s.seconds, toString(s.state).c_str(), s.fit,
+                  s.fit_detections, std_xy, std_phi, s.injected);
+    return line;
 }
 
 void writeStepsCsv(const std::string& path, const std::vector<StepRecord>& steps) {
@@ -18,15 +33,7 @@ void writeStepsCsv(const std::string& path, const std::vector<StepRecord>& steps
     std::ofstream f(path);
     if (!f) throw std::runtime_error("cannot write '" + path + "'");
     f << stepsCsvHeader() << "\n";
-    char line[512];
-    for (const auto& s : steps) {
-        std::snprintf(line, sizeof(line),
-                      "%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.6f,%.8g,%.8g,%.8g,%.8g,%.8g,%.8g,%.6f,%zu,%.3f,%zu,%d,%zu,%.6f\n",
-                      s.t_s, s.estimate.x, s.estimate.y, s.estimate.phi, s.mean.x, s.mean.y, s.mean.phi, s.cov(0, 0),
-                      s.cov(0, 1), s.cov(1, 1), s.cov(0, 2), s.cov(1, 2), s.cov(2, 2), s.cluster_weight, s.particles,
-                      s.ess, s.detections, s.updated ? 1 : 0, s.pruned, s.seconds);
-        f << line;
-    }
+    for (const auto& s : steps) f << stepsCsvLine(s);
     if (!f) throw std::runtime_error("error while writing '" + path + "'");
 }
 

@@ -41,12 +41,14 @@ int CObjectMap::usableClassOf(const simp::obs::CObservationObjects3D& obs, std::
 }
 
 std::size_t CObjectMap::prepareDetections(const SensorModel& model, const simp::obs::CObservationObjects3D& obs,
-                                          std::size_t& first, PreparedDetection* out, std::size_t cap) const {
+                                          std::size_t& first, PreparedDetection* out, std::size_t cap,
+                                          const double* weights) const {
     std::size_t count = 0;
     for (; first < obs.size() && count < cap; ++first) {
         const int cls = usableClassOf(obs, first);
         if (cls < 0) continue;
-        auto prepared = model.prepare(cls, obs.boxInRobot(first), obs.footprintInRobot(first));
+        auto prepared =
+            model.prepare(cls, obs.boxInRobot(first), obs.footprintInRobot(first), weights ? weights[first] : 1.0);
         if (prepared) out[count++] = *prepared;
     }
     return count;
@@ -67,13 +69,13 @@ std::optional<double> CObjectMap::detectionLogLikelihood(const simp::obs::CObser
 
 void CObjectMap::accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs,
                                           const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log,
-                                          std::size_t& used) const {
+                                          std::size_t& used, const double* weights) const {
     const auto model = sensorModel();
     if (model->empty()) warnEmptyOnce();
     std::array<PreparedDetection, kBatch> batch;
     std::size_t next = 0;
     while (next < obs.size()) {
-        const std::size_t count = prepareDetections(*model, obs, next, batch.data(), batch.size());
+        const std::size_t count = prepareDetections(*model, obs, next, batch.data(), batch.size(), weights);
         if (count == 0) continue;
         model->accumulateLogLikelihoods(batch.data(), count, poses, n, sum_log);
         used += count;

@@ -1,6 +1,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <simp/maps/CObjectMap.h>
 
+#include <cmath>
 #include <iomanip>
 #include <stdexcept>
 
@@ -32,6 +33,10 @@ void CObjectMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CCon
     MRPT_LOAD_CONFIG_VAR(edt_sigma_m, double, source, section);
     MRPT_LOAD_CONFIG_VAR(edt_max_distance_m, double, source, section);
     MRPT_LOAD_CONFIG_VAR(edt_resolution_m, double, source, section);
+    MRPT_LOAD_CONFIG_VAR(noise_reference_range_m, double, source, section);
+    if (!(noise_reference_range_m >= 0.0 && std::isfinite(noise_reference_range_m)))
+        throw std::invalid_argument("[" + section + "] noise_reference_range_m = " +
+                                    std::to_string(noise_reference_range_m) + " must be >= 0 (0 = off)");
     const auto positive = [&](double v, const char* key) {
         if (!(v > 0.0)) throw std::invalid_argument("[" + section + "] " + key + " = " + std::to_string(v) + " must be > 0");
     };
@@ -55,6 +60,7 @@ void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
     LOADABLEOPTS_DUMP_VAR(edt_sigma_m, double);
     LOADABLEOPTS_DUMP_VAR(edt_max_distance_m, double);
     LOADABLEOPTS_DUMP_VAR(edt_resolution_m, double);
+    LOADABLEOPTS_DUMP_VAR(noise_reference_range_m, double);
 }
 
 double CObjectMap::TLikelihoodOptions::thresholdOf(const std::string& class_name) const {
@@ -72,6 +78,7 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     p.edt_sigma_m = edt_sigma_m;
     p.edt_max_distance_m = edt_max_distance_m;
     p.edt_resolution_m = edt_resolution_m;
+    p.noise_reference_range_m = noise_reference_range_m;
     return p;
 }
 

@@ -26,6 +26,8 @@ void checkParams(const SensorModelParams& p) {
     if (!(p.edt_sigma_m > 0.0)) throw std::invalid_argument("edt_sigma_m must be > 0");
     if (!(p.edt_max_distance_m > 0.0)) throw std::invalid_argument("edt_max_distance_m must be > 0");
     if (!(p.edt_resolution_m > 0.0)) throw std::invalid_argument("edt_resolution_m must be > 0");
+    if (!(p.noise_reference_range_m >= 0.0 && std::isfinite(p.noise_reference_range_m)))
+        throw std::invalid_argument("noise_reference_range_m must be >= 0 (0 = off)");
 }
 
 }  // namespace
@@ -47,7 +49,8 @@ SensorModel::SensorModel(const world::ObjectMapData& data, const SensorModelPara
 }
 
 std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geometry::Box3D& box_in_robot,
-                                                      const geometry::ConvexPolygon& footprint_in_robot) const {
+                                                      const geometry::ConvexPolygon& footprint_in_robot,
+                                                      double weight) const {
     if (map_class < 0 || static_cast<std::size_t>(map_class) >= m_footprints.class_objects.size()) return std::nullopt;
     const bool usable = needsProbabilityMap(m_params.type)
                             ? m_mp.hasClass(map_class)
@@ -60,6 +63,11 @@ std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geome
     d.area_m2 = footprint_in_robot.area();
     for (std::size_t v = 0; v < footprint_in_robot.n; ++v)
         d.radius_m = std::max(d.radius_m, (footprint_in_robot.v[v] - d.center_robot_m).norm());
+    if (m_params.noise_reference_range_m > 0.0) {
+        const double s = std::max(1.0, d.center_robot_m.norm() / m_params.noise_reference_range_m);
+        d.noise_inv_scale2 = 1.0 / (s * s);
+    }
+    d.weight = weight;
     return d;
 }
 
@@ -75,7 +83,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
 
     if constexpr (T == SensorModelType::Simp || T == SensorModelType::D) {
         // Eq. globaldist: p_o = max over the class's objects of p_o(c), o_max its argmax (raster).
-        const auto hit = m_mp.lookup(det.map_class, wx, wy);
+        const auto hit = m_mp.lookup(det.map_class, wx, wy, det.noise_inv_scale2);
         if (hit.object < 0) return m_log_eta;  // p_o = 0: Eq. combined gives eta
         if constexpr (T == SensorModelType::D) {
             return std::log(hit.p + (1.0 - hit.p) * eta);  // Eq. combined with p_g = 1
@@ -110,7 +118,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
     } else {
         // EDT-MCL: beam-end model of the centre, mixed with the same floor eta.
         const double d = m_edt.distance(det.map_class, wx, wy);
-        const double p_hit = std::exp(-d * d * m_inv_two_sigma2);
+        const double p_hit = std::exp(-d * d * m_inv_two_sigma2 * det.noise_inv_scale2);
         return std::log(p_hit + (1.0 - p_hit) * eta);
     }
 }
@@ -123,7 +131,7 @@ void SensorModel::accumulate(const PreparedDetection* dets, std::size_t num_dets
         const auto& p = poses[i];
         const double c = std::cos(p.phi), s = std::sin(p.phi);
         double acc = 0.0;
-        for (std::size_t k = 0; k < num_dets; ++k) acc += kernel<T>(dets[k], c, s, p.x, p.y, scratch);
+        for (std::size_t k = 0; k < num_dets; ++k) acc += dets[k].weight * kernel<T>(dets[k], c, s, p.x, p.y, scratch);
         sum_log[i] += acc;
     }
 }

@@ -18,6 +18,10 @@ struct StampedPose2D {
 /// Reads a TUM file; throws std::runtime_error naming the file and line on malformed input
 /// (wrong column count, non-numbers, non-finite values, non-increasing time).
 std::vector<StampedPose2D> readTum(const std::string& path);
+/// The comment line that starts a TUM file written here (with its newline).
+std::string tumHeader();
+/// One TUM line (with its newline): t and x, y with 6 decimals, z = 0, the quaternion with 9.
+std::string tumLine(const StampedPose2D& pose);
 /// Writes a TUM file (creates parent folders); throws naming the file on failure.
 void writeTum(const std::string& path, const std::vector<StampedPose2D>& poses);
 

@@ -8,9 +8,11 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <simp/io/Tum.h>
 #include <simp/localization/LocalizeOptions.h>
+#include <simp/localization/Localizer.h>
 #include <simp/localization/ParticleSummary.h>
 #include <simp/localization/StepRecord.h>
 
+#include <array>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -22,7 +24,8 @@ class LocalizeApp {
    public:
     /// Command line (doc/localization.md):
     ///   simp-localize --world W --rawlog Q/sequence.rawlog --out O [--config INI]
-    ///                 [--method simp|edt|d|o] [--particles N] [--seed S] [--quiet]
+    ///                 [--method simp|edt|d|o] [--particles N] [--seed S]
+    ///                 [--initial-pose x,y,phi[,sigma_xy,sigma_phi]] [--quiet]
     /// Reads and validates the .ini. \throw std::invalid_argument on bad arguments or .ini keys.
     void initialize(int argc, const char* const* argv);
     void initialize(const std::vector<std::string>& args);
@@ -36,9 +39,9 @@ class LocalizeApp {
     /// @{
     std::string world_dir, rawlog_path, out_dir, config_path;
     mrpt::config::CConfigFileMemory params;  ///< the .ini content (empty without --config)
-    ExperimentOptions experiment;
-    MotionModelOptions motion;
-    mrpt::bayes::CParticleFilter::TParticleFilterOptions pf_options = defaultPfOptions();
+    LocalizerOptions options;                ///< everything the .ini sets
+    /// --initial-pose: x, y (m), phi (rad), sigma_xy (m), sigma_phi (rad); tracking from it
+    std::optional<std::array<double, 5>> initial_pose;
     bool show_progress = true;               ///< progress lines on stderr
     std::ostream* log = nullptr;             ///< informative messages (nullptr: std::cerr unless quiet)
     /// @}
@@ -47,16 +50,19 @@ class LocalizeApp {
     /// @{
     bool help_requested = false;             ///< --help was given: nothing to run
     std::vector<StepRecord> steps;           ///< one per frame
-    std::vector<io::StampedPose2D> estimate; ///< the estimate.tum lines
+    std::vector<io::StampedPose2D> estimate; ///< the estimate.tum lines (from the first localized step by default)
+    std::size_t truncated_at_entry = 0;      ///< > 0: the rawlog's tail from this entry on was incomplete
     std::vector<mrpt::math::TPose2D> final_particles;
     std::string sensor_model_used;           ///< simp | edt | d | o
     /// @}
 
-    static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
-
    private:
     void loadConfig();
 };
+
+/// --initial-pose "x,y,phi[,sigma_xy,sigma_phi]" -> {x, y, phi, sigma_xy, sigma_phi} (defaults 0.2 m,
+/// 0.1 rad). \throw std::invalid_argument naming the text when malformed.
+std::array<double, 5> parseInitialPose(const std::string& text);
 
 /// The message of an exception for a user: MRPT's nested exceptions reduced to their
 /// "Message:" lines (no locations, no call stacks).

@@ -19,6 +19,12 @@ enum class EstimateMode {
     Mean      ///< weighted mean of all particles
 };
 
+/// Where estimate.tum starts.
+enum class ReportFrom {
+    Localized,  ///< at the first step in state localized (a robot must not act on a search-phase guess)
+    Start       ///< at the first frame (the paper's evaluation)
+};
+
 /// [LocalizationExperiment]: the run itself.
 struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
@@ -38,6 +44,10 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     double cluster_max_dphi = 0.7853981633974483;  ///< cluster: and within this heading difference (rad)
     double cluster_cell_m = 0.5;          ///< cluster: xy bin size used to find the peak (m)
     int cluster_phi_bins = 8;             ///< cluster: heading bins used to find the peak
+    /// While localized, the particle count follows a KLD bound ([KLD_options] bins) between this and
+    /// particles_count (Fox, IJRR 2003); 0 = always particles_count (the paper).
+    std::size_t tracking_min_particles = 1000;
+    ReportFrom report_from = ReportFrom::Localized;  ///< first line of estimate.tum
     bool write_particles = true;          ///< write O/final_particles.txt
     bool write_png = true;                ///< write O/trajectory.png
 
@@ -55,6 +65,14 @@ struct MotionModelOptions : public mrpt::config::CLoadableOptions {
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
 };
+
+struct StateParams;
+struct DetectionNoveltyParams;
+struct SensorResettingParams;
+/// [State], [DetectionNovelty], [SensorResetting] (missing keys keep their defaults).
+void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, StateParams& p);
+void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, DetectionNoveltyParams& p);
+void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, SensorResettingParams& p);
 
 /// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);

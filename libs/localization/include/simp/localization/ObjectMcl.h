@@ -5,6 +5,7 @@
 /// particle weights of Eq. singw over all cameras' detections of a frame.
 
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
+#include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/FreeSpace.h>
 #include <simp/maps/CObjectMap.h>
 
@@ -56,6 +57,28 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// Particles replaced by random ones at the last step (recovery).
     std::size_t lastInjectedCount() const { return m_last_injected; }
 
+    /// @name The steps of one update, for a driver that runs them itself (Localizer)
+    /// prediction_and_update_pfStandardProposal() = predict, prune, recovery, weigh.
+    /// @{
+    /// MRPT's prediction from `actions` (nullptr: none), then pruning and augmented-MCL recovery
+    /// as configured above.
+    void predict(const mrpt::obs::CActionCollection* actions,
+                 const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options);
+    /// Adds pow_factor x Eq. singw of the update's observations to every particle's log-weight.
+    /// \return K, the detections used (0: weights unchanged).
+    std::size_t weigh(const std::vector<WeightedObservation>& observations, double pow_factor);
+    /// Replaces min(poses.size(), N) particles, spread evenly over the set, by `poses`, each with the
+    /// mean weight of the set (sensor resetting). \return how many were replaced.
+    std::size_t inject(const std::vector<mrpt::math::TPose2D>& poses);
+    /// Systematic resampling to `n` particles (equal weights). MRPT 2.5's computeResampling cannot
+    /// change the count: it draws the first n teeth of an N-tooth comb (n < N, biased to the first
+    /// particles) or runs past its arrays (n > N); doc/mrpt-issues.md.
+    void resampleTo(std::size_t n);
+    /// Draws `n` particles around `pose`: Gaussian with std sigma_xy_m in x and y and sigma_phi_rad
+    /// in heading (zero spread allowed), equal weights.
+    void resetAround(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad, std::size_t n);
+    /// @}
+
     /// @name mrpt::slam::CMonteCarloLocalization2D overrides
     /// @{
     void prediction_and_update_pfStandardProposal(
@@ -72,6 +95,7 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     void pruneOutsideFreeSpace(double dyn_range);
     void injectRandomParticles();
     void updateRecoveryAverages(const double* log_lik, std::size_t n);
+    double meanLogWeight() const;
 
     std::shared_ptr<const maps::CObjectMap> m_map;
     std::shared_ptr<const FreeSpace> m_free_space;

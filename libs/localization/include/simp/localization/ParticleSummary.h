@@ -17,6 +17,8 @@ struct ParticleSummary {
     mrpt::math::TPose2D mean;         ///< weighted mean of all particles (circular mean of phi)
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();  ///< weighted covariance of (x, y, phi) (m^2, m rad, rad^2)
     double cluster_weight = 1.0;      ///< fraction of the total weight inside the reported cluster, [0, 1]
+    /// weighted covariance of (x, y, phi) of the cluster's particles about the estimate (all particles in mean mode)
+    Eigen::Matrix3d cluster_cov = Eigen::Matrix3d::Zero();
     std::size_t particle_count = 0;
     double ess = 0;                   ///< effective sample size 1 / sum(w^2) of the normalized weights, [1, N]
 };

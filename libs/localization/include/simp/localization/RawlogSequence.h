@@ -21,6 +21,13 @@ struct RawlogSequence {
     std::vector<SequenceFrame> frames;
     std::string format;                      ///< "actions+sensoryframes" or "observations"
     std::size_t entries = 0;                 ///< objects read from the file
+    std::size_t truncated_at_entry = 0;      ///< > 0: entry index (1-based) of an incomplete last entry, not read
+};
+
+/// What loadRawlogSequence does with an entry cut short by the end of the file.
+enum class RawlogTail {
+    Strict,          ///< an error, like any corrupt entry
+    AllowTruncated   ///< the complete entries before it are returned (a rawlog still being written)
 };
 
 /** Reads a .rawlog (plain or gz-compressed) in either MRPT format:
@@ -31,8 +38,9 @@ struct RawlogSequence {
  * The frame time is its first observation's timestamp (else the action's; else the frame
  * index, in seconds).
  * \throw std::runtime_error naming the file when it cannot be opened, is corrupt or truncated
- *        (with the entry index), or holds no frame.
+ *        (with the entry index), or holds no frame. With RawlogTail::AllowTruncated, an entry that
+ *        fails to read where the file ends (no byte follows it) only ends the sequence.
  */
-RawlogSequence loadRawlogSequence(const std::string& path);
+RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail = RawlogTail::Strict);
 
 }  // namespace simp::localization

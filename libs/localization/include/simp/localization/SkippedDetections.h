@@ -4,9 +4,8 @@
 /// filter update instead of being dropped: each is re-expressed in the robot frame of the update
 /// through the odometry between its frame and the update.
 
-#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
-#include <simp/obs/CObservationObjects3D.h>
+#include <simp/localization/FrameLikelihood.h>
 
 #include <utility>
 #include <vector>
@@ -15,21 +14,21 @@ namespace simp::localization {
 
 class SkippedDetections {
    public:
-    /// Keeps the CObservationObjects3D of `sf` (a skipped frame); `motion_since_update` is the
-    /// odometry from the last update's robot pose to this frame's.
-    void add(const mrpt::obs::CSensoryFrame& sf, const mrpt::poses::CPose2D& motion_since_update);
+    /// Keeps the observations of a skipped frame; `motion_since_update` is the odometry from the
+    /// last update's robot pose to this frame's.
+    void add(const std::vector<WeightedObservation>& frame, const mrpt::poses::CPose2D& motion_since_update);
 
-    /// The sensory frame of an update: the observations of `current` plus every kept one, whose
-    /// camera pose becomes T_update_frame (+) T_robot_camera with T_update_frame =
-    /// motion_at_update^-1 (+) motion_since_update (robot frame of the update). Clears the buffer.
-    mrpt::obs::CSensoryFrame::Ptr merge(const mrpt::obs::CSensoryFrame::Ptr& current,
-                                        const mrpt::poses::CPose2D& motion_at_update);
+    /// The observations of an update: `current` plus every kept one, whose camera pose becomes
+    /// T_update_frame (+) T_robot_camera with T_update_frame = motion_at_update^-1 (+)
+    /// motion_since_update (robot frame of the update). Clears the buffer.
+    std::vector<WeightedObservation> merge(const std::vector<WeightedObservation>& current,
+                                           const mrpt::poses::CPose2D& motion_at_update);
 
     std::size_t size() const { return m_kept.size(); }
     void clear() { m_kept.clear(); }
 
    private:
-    std::vector<std::pair<simp::obs::CObservationObjects3D::Ptr, mrpt::poses::CPose2D>> m_kept;
+    std::vector<std::pair<WeightedObservation, mrpt::poses::CPose2D>> m_kept;
 };
 
 }  // namespace simp::localization

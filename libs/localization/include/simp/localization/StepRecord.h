@@ -3,8 +3,10 @@
 /// One row of O/steps.csv: the filter's state after a frame.
 
 #include <mrpt/math/TPose2D.h>
+#include <simp/localization/LocalizationState.h>
 
 #include <Eigen/Core>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -14,18 +16,25 @@ struct StepRecord {
     double t_s = 0;                  ///< frame time (s)
     mrpt::math::TPose2D estimate;    ///< reported pose (world; m, rad), the line of estimate.tum
     mrpt::math::TPose2D mean;        ///< weighted mean of all particles
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();  ///< weighted covariance of (x, y, phi)
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();  ///< weighted covariance of (x, y, phi) of all particles
+    Eigen::Matrix3d cluster_cov = Eigen::Matrix3d::Zero();  ///< ... of the reported cluster: the estimate's uncertainty
     double cluster_weight = 1;       ///< weight fraction of the reported cluster, [0, 1]
     std::size_t particles = 0;       ///< particle count after the frame
     double ess = 0;                  ///< effective sample size (particles) after the update, before resampling
     std::size_t detections = 0;      ///< K of Eq. singw (0 when not updated)
     bool updated = false;            ///< the filter ran an update on this frame (motion trigger)
     std::size_t pruned = 0;          ///< particles redrawn off free space
+    std::size_t injected = 0;        ///< particles replaced by sensor resetting or recovery
+    LocalizationState state = LocalizationState::Global;  ///< after the frame
+    double fit = 0;                  ///< fraction of the last detections the estimate explains (FitWindow)
+    std::size_t fit_detections = 0;  ///< detections behind `fit`
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 
 /// The header line of steps.csv (no trailing newline).
 std::string stepsCsvHeader();
+/// One data line of steps.csv (with the newline).
+std::string stepsCsvLine(const StepRecord& s);
 /// Writes steps.csv; throws std::runtime_error naming the file on failure.
 void writeStepsCsv(const std::string& path, const std::vector<StepRecord>& steps);
 

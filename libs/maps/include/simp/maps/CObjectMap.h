@@ -76,6 +76,9 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         double edt_sigma_m = 0.3;          ///< EDT baseline: std. dev. of the centre distance (m)
         double edt_max_distance_m = 2.0;   ///< EDT baseline: distance clamp (m)
         double edt_resolution_m = 0.05;    ///< EDT baseline: raster cell (m)
+        /// Range growth of the detection noise (m): detections farther than this from the robot are
+        /// scored with the noise model widened by range / this. 0 = off (the paper's model).
+        double noise_reference_range_m = 3.0;
 
         /// Threshold for a class name.
         double thresholdOf(const std::string& class_name) const;
@@ -109,9 +112,14 @@ class CObjectMap : public mrpt::maps::CMetricMap {
                                                  const mrpt::math::TPose2D& robot_pose) const;
 
     /// Fast batch path for N particle poses: adds log p of every used detection to sum_log[i]
-    /// and the number of used detections to `used` (same for all particles).
+    /// and the number of used detections to `used` (same for all particles). With `weights`
+    /// (one per detection of `obs`), detection k adds weights[k] log p instead.
     void accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs, const mrpt::math::TPose2D* poses,
-                                  std::size_t n, double* sum_log, std::size_t& used) const;
+                                  std::size_t n, double* sum_log, std::size_t& used,
+                                  const double* weights = nullptr) const;
+    /// Map class id of detection k of `obs`, or -1 when it is ignored (under its class threshold,
+    /// class not in the map).
+    int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
 
     /// The precomputed model for the current data and likelihoodOptions (built on demand).
     std::shared_ptr<const SensorModel> sensorModel() const;
@@ -148,9 +156,8 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     /// Detections of `obs` that take part, prepared in the robot frame; returns how many were
     /// written to `out` (capacity `cap`), starting at detection `first` (advanced past the last read).
     std::size_t prepareDetections(const SensorModel& model, const simp::obs::CObservationObjects3D& obs,
-                                  std::size_t& first, PreparedDetection* out, std::size_t cap) const;
-    /// Map class id of detection k, or -1 when ignored (threshold, class not in the map).
-    int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
+                                  std::size_t& first, PreparedDetection* out, std::size_t cap,
+                                  const double* weights) const;
     void warnEmptyOnce() const;
     /// Copies the builder's map into m_data when it changed; the model is rebuilt lazily.
     void syncFromBuilder();

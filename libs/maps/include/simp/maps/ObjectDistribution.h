@@ -40,8 +40,11 @@ struct ObjectDistribution {
         if (half_b == 2.0) return m2 * m2;
         return std::pow(m2, half_b);
     }
-    /// p_o at the world point (x, y) (m), in [0, 1].
-    double probability(double x_m, double y_m) const { return std::exp(-0.5 * powerB(mahalanobis2(x_m, y_m))); }
+    /// p_o at the world point (x, y) (m), in [0, 1]. `inv_scale2` = 1 / s^2 widens Sigma_o to
+    /// s^2 Sigma_o (s >= 1: a detection noisier than the model, e.g. a distant one).
+    double probability(double x_m, double y_m, double inv_scale2 = 1.0) const {
+        return std::exp(-0.5 * powerB(mahalanobis2(x_m, y_m) * inv_scale2));
+    }
 };
 
 /// Yaw (rad, world) of the noise frame of Eq. shiftdist: the noise model's y axis is the box's

@@ -35,14 +35,16 @@ class ObjectProbabilityMap {
 
     /// Eq. globaldist from the raster: o_max = the object with the largest p_o at the centre
     /// of the cell holding (x, y) (world, m); p = p_{o_max}(x, y) evaluated exactly.
-    /// Outside the class raster or beyond every object's support: {-1, 0}.
-    Lookup lookup(int class_id, double x_m, double y_m) const {
+    /// Outside the class raster or beyond every object's support: {-1, 0}. `inv_scale2` widens
+    /// o_max's distribution (ObjectDistribution::probability); o_max and the support are those of
+    /// the model's own Sigma.
+    Lookup lookup(int class_id, double x_m, double y_m, double inv_scale2 = 1.0) const {
         const ClassRaster& r = m_classes[static_cast<std::size_t>(class_id)];
         const std::int64_t cell = r.grid.cellIndex(x_m, y_m);
         if (cell < 0) return {};
         const std::int32_t o = r.best[static_cast<std::size_t>(cell)];
         if (o < 0) return {};
-        return {o, m_distributions[static_cast<std::size_t>(o)].probability(x_m, y_m)};
+        return {o, m_distributions[static_cast<std::size_t>(o)].probability(x_m, y_m, inv_scale2)};
     }
 
     /// Eq. globaldist by brute force over all the class's objects (reference for tests).

@@ -23,6 +23,8 @@ struct PreparedDetection {
     geometry::ConvexPolygon footprint_robot;                ///< ground footprint (robot frame, m)
     double area_m2 = 0;                                     ///< footprint area (m^2)
     double radius_m = 0;                                    ///< bounding circle about center_robot_m (m)
+    double noise_inv_scale2 = 1;  ///< 1 / s^2 of the range growth (SensorModelParams::noise_reference_range_m)
+    double weight = 1;            ///< exponent on p(z_k | m, x): 1 = an independent detection, < 1 a repeated one
 };
 
 /// Precomputed map side of the sensor models. Immutable once built; safe to share between threads.
@@ -36,16 +38,18 @@ class SensorModel {
     /// True when the map has no object usable by the selected model.
     bool empty() const { return m_num_usable_objects == 0; }
 
-    /// Prepares a detection of map class `map_class` (box and footprint in the robot frame).
-    /// std::nullopt when the class has no usable object in the map (the detection is ignored).
+    /// Prepares a detection of map class `map_class` (box and footprint in the robot frame) whose
+    /// log-likelihood is taken `weight` times (1 = the paper's). std::nullopt when the class has no
+    /// usable object in the map (the detection is ignored).
     std::optional<PreparedDetection> prepare(int map_class, const geometry::Box3D& box_in_robot,
-                                             const geometry::ConvexPolygon& footprint_in_robot) const;
+                                             const geometry::ConvexPolygon& footprint_in_robot,
+                                             double weight = 1.0) const;
 
     /// log p(z_k | m, x) of one prepared detection for the robot at `pose` (x, y in m, phi in rad):
-    /// Eq. combined for Simp, the baseline's likelihood otherwise.
+    /// Eq. combined for Simp, the baseline's likelihood otherwise (the detection's weight not applied).
     double logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const;
 
-    /// sum_log[i] += log p(z_k | m, poses[i]) for every detection k (no allocation, no virtual calls).
+    /// sum_log[i] += weight_k log p(z_k | m, poses[i]) for every detection k (no allocation, no virtual calls).
     void accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                   const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const;
 

@@ -29,12 +29,17 @@ struct SensorModelParams {
     double edt_sigma_m = 0.3;           ///< EDT: std. dev. of the centre distance (m)
     double edt_max_distance_m = 2.0;    ///< EDT: distances are clamped to this (m)
     double edt_resolution_m = 0.05;     ///< EDT raster cell (m)
+    /// Range growth of the detection noise: a detection whose centre is r > this (m) from the robot
+    /// is scored with the noise model widened by s = r / this (Sigma -> s^2 Sigma; EDT: sigma -> s
+    /// sigma). Monocular depth error grows with distance. 0 = off (the paper's model).
+    double noise_reference_range_m = 0.0;
 
     bool operator==(const SensorModelParams& o) const {
         return type == o.type && eta == o.eta && mp.resolution_m == o.mp.resolution_m &&
                mp.min_probability == o.mp.min_probability &&
                mp.skip_classes_without_noise == o.mp.skip_classes_without_noise && edt_sigma_m == o.edt_sigma_m &&
-               edt_max_distance_m == o.edt_max_distance_m && edt_resolution_m == o.edt_resolution_m;
+               edt_max_distance_m == o.edt_max_distance_m && edt_resolution_m == o.edt_resolution_m &&
+               noise_reference_range_m == o.noise_reference_range_m;
     }
     bool operator!=(const SensorModelParams& o) const { return !(*this == o); }
 };

@@ -1,0 +1,88 @@
+#pragma once
+/// \file LocalizationState.h
+/// What the filter can say about itself (not in the paper): `global` (searching), `localized`
+/// (the reported pose can be acted on), `lost` (it could not, and the filter is recovering).
+///
+/// The state rests on two measurements, both reported per step:
+///  - the posterior's concentration: the weight fraction and the position spread of the reported
+///    cluster (ParticleSummary);
+///  - the fit of the evidence: the fraction of the last detections that the reported pose explains
+///    (FitWindow): a detection is explained when its likelihood at the pose is at least
+///    `explained_ratio` times the false-association floor eta of Eq. combined.
+/// A set that collapsed onto a wrong place is concentrated, but it does not explain what the robot
+/// sees; a robot carried elsewhere stops being explained within a few detections.
+
+#include <mrpt/poses/CPose2D.h>
+#include <simp/maps/CObjectMap.h>
+#include <simp/obs/CObservationObjects3D.h>
+
+#include <deque>
+#include <string>
+
+namespace simp::localization {
+
+enum class LocalizationState { Global, Localized, Lost };
+/// "global" | "localized" | "lost".
+std::string toString(LocalizationState s);
+
+struct StateParams {
+    std::size_t fit_window = 12;           ///< detections kept for the fit (the last ones)
+    double fit_max_age_s = 15.0;           ///< ... and not older than this (s)
+    std::size_t fit_min_detections = 6;    ///< fewer in the window: the fit says nothing
+    double explained_ratio = 2.0;          ///< explained: p(z|m,x) >= this x eta
+    double localized_min_fit = 0.5;        ///< localized needs at least this fit ...
+    double localized_min_weight = 0.8;     ///< ... this cluster weight fraction ...
+    double localized_max_std_m = 0.3;      ///< ... a cluster position spread (sqrt of trace) under this (m) ...
+    std::size_t localized_min_updates = 3; ///< ... over this many consecutive updates with detections
+    double lost_max_fit = 0.25;            ///< localized -> lost when the fit falls to this ...
+    double lost_min_weight = 0.3;          ///< ... or the cluster weight under this
+};
+
+/// The last detections with the odometry pose of their frame, scored at a pose estimate.
+class FitWindow {
+   public:
+    explicit FitWindow(const StateParams& params = {}) : m_params(params) {}
+    /// Adds the used detections of `obs` (camera pose in the robot frame) seen at time t_s with
+    /// the robot at `odometry_pose` (odometry frame).
+    void add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
+             const mrpt::poses::CPose2D& odometry_pose, double t_s);
+    struct Fit {
+        double fraction = 0;      ///< explained / scored, in [0, 1]
+        std::size_t scored = 0;   ///< detections in the window
+    };
+    /// Scores the window with the robot at `estimate` (world) now, at odometry pose `odometry_now`:
+    /// each detection at estimate (+) (odometry_now^-1 (+) its odometry pose).
+    Fit evaluate(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                 const mrpt::poses::CPose2D& odometry_now, double t_now_s);
+    void clear() { m_items.clear(); }
+
+   private:
+    struct Item {
+        simp::obs::CObservationObjects3D::Ptr obs;
+        std::size_t k = 0;
+        mrpt::poses::CPose2D odometry_pose;
+        double t_s = 0;
+    };
+    StateParams m_params;
+    std::deque<Item> m_items;
+};
+
+/// The state machine: feed it after every filter update.
+class StateMonitor {
+   public:
+    explicit StateMonitor(const StateParams& params = {}) : m_params(params) {}
+    /// Starts in `s` (Global for global localization, Localized for a given initial pose).
+    void reset(LocalizationState s) { m_state = s, m_good_updates = 0; }
+    /// One update: cluster weight fraction, cluster position spread (m), the window's fit and
+    /// whether the update had detections. Returns the new state.
+    LocalizationState update(double cluster_weight, double cluster_std_m, const FitWindow::Fit& fit,
+                             bool had_detections);
+    LocalizationState state() const { return m_state; }
+
+   private:
+    StateParams m_params;
+    LocalizationState m_state = LocalizationState::Global;
+    std::size_t m_good_updates = 0;
+};
+
+}  // namespace simp::localization

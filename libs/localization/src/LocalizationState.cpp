@@ -1,0 +1,60 @@
+#include <simp/localization/LocalizationState.h>
+
+#include <cmath>
+
+namespace simp::localization {
+
+std::string toString(LocalizationState s) {
+    switch (s) {
+        case LocalizationState::Global: return "global";
+        case LocalizationState::Localized: return "localized";
+        case LocalizationState::Lost: return "lost";
+    }
+    return "?";
+}
+
+void FitWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
+                    const mrpt::poses::CPose2D& odometry_pose, double t_s) {
+    for (std::size_t k = 0; k < obs->size(); ++k) {
+        if (map.usableClassOf(*obs, k) < 0) continue;
+        m_items.push_back({obs, k, odometry_pose, t_s});
+        if (m_items.size() > m_params.fit_window) m_items.pop_front();
+    }
+}
+
+FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                   const mrpt::poses::CPose2D& odometry_now, double t_now_s) {
+    while (!m_items.empty() && t_now_s - m_items.front().t_s > m_params.fit_max_age_s) m_items.pop_front();
+    const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
+    Fit fit;
+    std::size_t explained = 0;
+    for (const auto& it : m_items) {
+        const mrpt::poses::CPose2D world_T_frame = estimate + (it.odometry_pose - odometry_now);
+        const auto log_p = map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
+        if (!log_p) continue;
+        ++fit.scored;
+        if (*log_p >= log_explained) ++explained;
+    }
+    if (fit.scored > 0) fit.fraction = static_cast<double>(explained) / static_cast<double>(fit.scored);
+    return fit;
+}
+
+LocalizationState StateMonitor::update(double cluster_weight, double cluster_std_m, const FitWindow::Fit& fit,
+                                       bool had_detections) {
+    const bool fit_known = fit.scored >= m_params.fit_min_detections;
+    if (m_state == LocalizationState::Localized) {
+        if ((fit_known && fit.fraction <= m_params.lost_max_fit) || cluster_weight < m_params.lost_min_weight) {
+            m_state = LocalizationState::Lost;
+            m_good_updates = 0;
+        }
+        return m_state;
+    }
+    if (!had_detections) return m_state;  // nothing new to decide on
+    const bool good = fit_known && fit.fraction >= m_params.localized_min_fit &&
+                      cluster_weight >= m_params.localized_min_weight && cluster_std_m <= m_params.localized_max_std_m;
+    m_good_updates = good ? m_good_updates + 1 : 0;
+    if (m_good_updates >= m_params.localized_min_updates) m_state = LocalizationState::Localized;
+    return m_state;
+}
+
+}  // namespace simp::localization

@@ -1,0 +1,211 @@
+#include <simp/localization/Localizer.h>
+
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <simp/localization/ParticleSummary.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+namespace simp::localization {
+namespace {
+
+/// The action of one filter step: the odometry increment with the [MotionModel] noise.
+mrpt::obs::CActionCollection makeAction(const mrpt::poses::CPose2D& increment, const MotionModelOptions& motion) {
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(increment, motion.mrpt_options);
+    mrpt::obs::CActionCollection acts;
+    acts.insert(mv);
+    return acts;
+}
+
+/// z with P(N(0,1) <= z) = p, by bisection on erfc (p in (0.5, 1)).
+double standardNormalQuantile(double p) {
+    double lo = 0.0, hi = 10.0;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (1.0 - 0.5 * std::erfc(mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizerOptions::defaultPfOptions() {
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions o;
+    o.PF_algorithm = mrpt::bayes::CParticleFilter::pfStandardProposal;
+    o.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+    o.adaptiveSampleSize = false;
+    o.BETA = 0.5;
+    o.sampleSize = 1;
+    return o;
+}
+
+std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld) {
+    std::set<std::tuple<long, long, long>> bins;
+    for (const auto& p : pdf.m_particles)
+        bins.emplace(static_cast<long>(std::floor(p.d.x / kld.KLD_binSize_XY)),
+                     static_cast<long>(std::floor(p.d.y / kld.KLD_binSize_XY)),
+                     static_cast<long>(std::floor(p.d.phi / kld.KLD_binSize_PHI)));
+    const double k = static_cast<double>(bins.size());
+    if (k <= 1) return kld.KLD_minSampleSize;
+    const double z = standardNormalQuantile(1.0 - kld.KLD_delta);
+    const double a = 2.0 / (9.0 * (k - 1.0));
+    const double n = (k - 1.0) / (2.0 * kld.KLD_epsilon) * std::pow(1.0 - a + std::sqrt(a) * z, 3);
+    const double per_bin = kld.KLD_minSamplesPerBin * k;
+    const double bounded = std::clamp(std::max(n, per_bin), static_cast<double>(kld.KLD_minSampleSize),
+                                      static_cast<double>(kld.KLD_maxSampleSize));
+    return static_cast<std::size_t>(std::ceil(bounded));
+}
+
+Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::maps::COccupancyGridMap2D& floorplan,
+                     const LocalizerOptions& options)
+    : m_map(std::move(map)),
+      m_floorplan(floorplan),
+      m_opts(options),
+      m_free(std::make_shared<FreeSpace>(floorplan, options.experiment.free_cells_threshold)),
+      m_mcl(std::make_unique<ObjectMcl>(m_map)),
+      m_novelty(options.novelty),
+      m_sampler(*m_map, *m_free, options.resetting.sampler),
+      m_fit(options.state),
+      m_monitor(options.state) {
+    const auto& e = m_opts.experiment;
+    m_mcl->options.KLD_params = m_opts.kld;
+    m_mcl->prune_outside_free_space = e.prune_outside_free_space;
+    m_mcl->prune_keeps_weight = e.prune_keeps_weight;
+    m_mcl->singw_per_frame = e.singw_per_frame;
+    m_mcl->recovery_alpha_slow = e.recovery_alpha_slow;
+    m_mcl->recovery_alpha_fast = e.recovery_alpha_fast;
+    m_mcl->setFreeSpace(m_free);
+    m_pf.m_options = m_opts.pf;
+}
+
+void Localizer::startGlobal() {
+    auto grid = m_floorplan;  // MRPT's reset takes a non-const map
+    m_mcl->resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold,
+                                 static_cast<int>(m_opts.experiment.particles_count));
+    m_monitor.reset(LocalizationState::Global);
+    m_first = true;
+}
+
+void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad) {
+    if (!m_free->isFree(pose.x, pose.y))
+        throw std::invalid_argument("initial pose (" + std::to_string(pose.x) + ", " + std::to_string(pose.y) +
+                                    ") is not in the floor plan's free space");
+    if (!(sigma_xy_m >= 0 && sigma_phi_rad >= 0))
+        throw std::invalid_argument("initial pose: sigma_xy and sigma_phi must be >= 0");
+    m_mcl->resetAround(pose, sigma_xy_m, sigma_phi_rad, m_opts.experiment.particles_count);
+    m_monitor.reset(LocalizationState::Localized);
+    m_first = true;
+}
+
+std::size_t Localizer::particleTarget() const {
+    const std::size_t full = m_opts.experiment.particles_count;
+    if (m_opts.experiment.tracking_min_particles == 0) return m_mcl->size();
+    if (m_monitor.state() != LocalizationState::Localized) return full;
+    auto kld = m_opts.kld;
+    kld.KLD_minSampleSize = static_cast<unsigned>(std::min(m_opts.experiment.tracking_min_particles, full));
+    kld.KLD_maxSampleSize = static_cast<unsigned>(full);
+    return kldParticleCount(*m_mcl, kld);
+}
+
+std::size_t Localizer::injectFromDetections(const std::vector<WeightedObservation>& observations) {
+    const auto& r = m_opts.resetting;
+    const double fraction = m_monitor.state() == LocalizationState::Global   ? r.global_fraction
+                            : m_monitor.state() == LocalizationState::Lost ? r.lost_fraction
+                                                                           : r.localized_fraction;
+    const auto count = static_cast<std::size_t>(std::lround(fraction * static_cast<double>(m_mcl->size())));
+    if (count == 0) return 0;
+    const auto n_uniform = static_cast<std::size_t>(std::lround(r.uniform_share * static_cast<double>(count)));
+    auto& rng = mrpt::random::getRandomGenerator();
+    auto poses = m_sampler.sample(observations, count - n_uniform, rng);
+    if (poses.empty()) return 0;  // nothing in view to reset from: keep the set as it is
+    while (poses.size() < count) poses.push_back(m_free->drawUniform());
+    return m_mcl->inject(poses);
+}
+
+void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<WeightedObservation>& observations,
+                       StepRecord& rec) {
+    const auto& pf = m_opts.pf;
+    std::optional<mrpt::obs::CActionCollection> acts;
+    if (motion) acts = makeAction(*motion, m_opts.motion);
+    if (pf.PF_algorithm != mrpt::bayes::CParticleFilter::pfStandardProposal) {
+        // MRPT's auxiliary filters weigh one pose at a time through the plain Eq. singw.
+        mrpt::obs::CSensoryFrame sf;
+        for (const auto& o : observations) sf.insert(o.obs);
+        mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
+        m_pf.executeOn(*m_mcl, acts ? &*acts : nullptr, &sf, &stats);
+        rec.ess = stats.ESS_beforeResample * static_cast<double>(m_mcl->size());
+    } else {
+        // CParticleFilter::executeOn's steps, with sensor resetting before the weights and the
+        // particle count chosen at resampling.
+        m_mcl->predict(acts ? &*acts : nullptr, pf);
+        const std::size_t injected = injectFromDetections(observations);
+        m_mcl->weigh(observations, pf.powFactor);
+        m_mcl->normalizeWeights();
+        const double ess = m_mcl->ESS();
+        rec.ess = ess * static_cast<double>(m_mcl->size());
+        rec.injected = m_mcl->lastInjectedCount() + injected;
+        if (!pf.adaptiveSampleSize) {
+            const std::size_t target = particleTarget();
+            if (target != m_mcl->size())
+                m_mcl->resampleTo(target);
+            else if (ess < pf.BETA)
+                m_mcl->performResampling(pf);
+        }
+    }
+    rec.updated = true;
+    rec.detections = m_mcl->lastDetectionCount();
+    rec.pruned = m_mcl->lastPrunedCount();
+}
+
+StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_increment,
+                           const mrpt::obs::CSensoryFrame& frame) {
+    m_pending = m_pending + odometry_increment;
+    m_odometry = m_odometry + odometry_increment;
+    std::vector<WeightedObservation> observations = objectObservations(frame);
+    for (auto& o : observations) {
+        o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
+        m_fit.add(*m_map, o.obs, m_odometry, t_s);
+    }
+
+    StepRecord rec;
+    rec.t_s = t_s;
+    const auto& e = m_opts.experiment;
+    // Motion trigger (paper: d_xy, d_theta): the first frame, then after enough motion.
+    const bool trigger = m_first || m_pending.norm() >= e.update_min_d_xy || std::abs(m_pending.phi()) >= e.update_min_d_phi;
+    if (trigger) {
+        const auto all = m_skipped.merge(observations, m_pending);
+        const bool no_motion = m_first && m_pending.norm() == 0 && m_pending.phi() == 0;
+        update(no_motion ? nullptr : &m_pending, all, rec);
+        m_pending = mrpt::poses::CPose2D();
+        m_first = false;
+    } else if (e.keep_skipped_detections) {
+        m_skipped.add(observations, m_pending);
+    }
+
+    const ParticleSummary s = summarizeParticles(*m_mcl, e);
+    // The pose now: the filter's estimate moved by the odometry it has not applied yet.
+    const mrpt::poses::CPose2D now = mrpt::poses::CPose2D(s.estimate) + m_pending;
+    rec.estimate = now.asTPose();
+    rec.mean = s.mean;
+    rec.cov = s.cov;
+    rec.cluster_cov = s.cluster_cov;
+    rec.cluster_weight = s.cluster_weight;
+    rec.particles = s.particle_count;
+    if (!trigger) rec.ess = s.ess;
+    const auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
+    rec.fit = fit.fraction;
+    rec.fit_detections = fit.scored;
+    if (trigger)
+        m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
+                         rec.detections > 0);
+    rec.state = m_monitor.state();
+    return rec;
+}
+
+}  // namespace simp::localization
