@@ -15,10 +15,12 @@ inline std::string slurp(const std::string& path) {
     return s.str();
 }
 
-/// SIMP_TEST_OUTPUT_DIR/sim/<name>, removed if it existed (not created).
+/// SIMP_TEST_OUTPUT_DIR/sim/<name>, removed if it existed (not created; its parent is, because
+/// simulateSequence creates only the last folder and ctest may run any test first in a fresh tree).
 inline std::string clearedDir(const std::string& name) {
     const auto d = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "sim" / name;
     std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d.parent_path());
     return d.string();
 }
 

@@ -49,7 +49,8 @@ TEST(SimSequence, SameSeedGivesByteIdenticalFiles) {
     simp::sim::simulateSequence(w, p, 77, a);
     simp::sim::simulateSequence(w, p, 77, b);
     simp::sim::simulateSequence(w, p, 78, c);
-    for (const char* f : {"sequence.rawlog", "groundtruth.tum", "world/objects.json", "world/floorplan.png", "overview.png"}) {
+    for (const char* f : {"sequence.rawlog", "groundtruth.tum", "world/objects.json", "world/floorplan.png", "overview.png",
+                          "changes.json"}) {
         const std::string fa = slurp(a + "/" + f);
         EXPECT_FALSE(fa.empty()) << f;
         EXPECT_EQ(fa, slurp(b + "/" + f)) << f;

@@ -10,7 +10,7 @@
 namespace simp::sim {
 
 void writeOverviewPng(const world::World& world, const std::vector<io::StampedPose2D>& trajectory,
-                      const std::string& png_path) {
+                      const std::string& png_path, std::size_t jump_step) {
     const auto& g = world.floorplan;
     const int nx = static_cast<int>(g.getSizeX()), ny = static_cast<int>(g.getSizeY());
     if (nx == 0 || ny == 0) throw std::runtime_error("writeOverviewPng: empty floor plan");
@@ -36,10 +36,16 @@ void writeOverviewPng(const world::World& world, const std::vector<io::StampedPo
         if (poly.size() >= 3) cv::polylines(img, poly, true, cv::Scalar(bgr(0, 0)[0], bgr(0, 0)[1], bgr(0, 0)[2]), 1 + scale / 2);
     }
     for (std::size_t k = 1; k < trajectory.size(); ++k)
-        cv::line(img, toPx(trajectory[k - 1].pose.x, trajectory[k - 1].pose.y), toPx(trajectory[k].pose.x, trajectory[k].pose.y),
+        if (k != jump_step) cv::line(img, toPx(trajectory[k - 1].pose.x, trajectory[k - 1].pose.y), toPx(trajectory[k].pose.x, trajectory[k].pose.y),
                  cv::Scalar(0, 0, 255), 1);
     if (!trajectory.empty())
         cv::circle(img, toPx(trajectory.front().pose.x, trajectory.front().pose.y), 3 * scale, cv::Scalar(0, 160, 0), -1);
+    if (jump_step > 0 && jump_step < trajectory.size()) {  // a teleport: no path between, but where from and to
+        const auto& from = trajectory[jump_step - 1].pose;
+        const auto& to = trajectory[jump_step].pose;
+        cv::circle(img, toPx(from.x, from.y), 3 * scale, cv::Scalar(255, 0, 0), 1 + scale / 2);
+        cv::circle(img, toPx(to.x, to.y), 3 * scale, cv::Scalar(0, 140, 255), -1);
+    }
     if (!cv::imwrite(png_path, img)) throw std::runtime_error("cannot write '" + png_path + "'");
 }
 

@@ -10,6 +10,7 @@
 #include <simp/sim/People.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/Visibility.h>
+#include <simp/world/JsonRead.h>
 
 #include <Eigen/Cholesky>
 #include <cmath>
@@ -43,6 +44,24 @@ mrpt::obs::CActionRobotMovement2D odometryAction(const mrpt::poses::CPose2D& tru
     return act;
 }
 
+nlohmann::ordered_json poseToJson(const mrpt::math::TPose2D& p) {
+    return nlohmann::ordered_json{{"x", p.x}, {"y", p.y}, {"phi", p.phi}};
+}
+
+/// Q/kidnap.json (doc/formats.md): where evaluation finds the teleport without reading the code.
+void saveKidnapJson(const KidnapEvent& k, const std::string& path) {
+    nlohmann::ordered_json j;
+    j["format"] = "simp-kidnap";
+    j["version"] = 1;
+    j["t_s"] = k.t_s;
+    j["t_from_start_s"] = k.t_from_start_s;
+    j["step"] = k.step;
+    j["from"] = poseToJson(k.from);
+    j["to"] = poseToJson(k.to);
+    j["jump_m"] = std::hypot(k.to.x - k.from.x, k.to.y - k.from.y);
+    world::writeJsonFile(j, path);
+}
+
 /// A walking person as an object box (not in any map).
 world::MapObject personBox(const mrpt::math::TPose2D& pose, const Eigen::Vector3d& size, int person_class) {
     world::MapObject o;
@@ -63,6 +82,9 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     Rng rng_changes(master.split()), rng_traj(master.split()), rng_people(master.split()), rng_det(master.split()),
         rng_odo(master.split());
     const std::uint64_t noise_seed = master.split();  // persistent detection errors (doc/simulator.md)
+    // split after all others: a sequence without a kidnap draws exactly what it drew before
+    Rng rng_kidnap(master.split());
+    params.validateKidnap();
     SequenceSummary summary;
 
     // the world of this sequence (long-term change) and what the robot must drive around
@@ -73,11 +95,17 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     const Raster obstacles = drivingObstacles(w);
 
     const double dt = 1.0 / params.odometry.rate_hz;
-    const auto traj = generateTrajectory(obstacles, w.rooms, params.trajectory, params.epoch_s, dt, params.duration_s, rng_traj);
+    KidnapEvent kidnap;
+    const KidnapParams kidnap_params{params.kidnap_at_s, params.kidnap_min_distance_m};
+    const auto traj = generateTrajectory(obstacles, w.rooms, params.trajectory, params.epoch_s, dt, params.duration_s,
+                                         rng_traj, kidnap_params, &rng_kidnap, &kidnap);
+    if (kidnap_params.at_s >= 0) summary.kidnap = kidnap;
+    const std::size_t jump_step = summary.kidnap ? kidnap.step : 0;  // 0: no teleport (pose 0 is the start)
     std::vector<double> times;
     for (const auto& p : traj) times.push_back(p.t_s);
     for (std::size_t k = 1; k < traj.size(); ++k)
-        summary.path_length_m += std::hypot(traj[k].pose.x - traj[k - 1].pose.x, traj[k].pose.y - traj[k - 1].pose.y);
+        if (k != jump_step)
+            summary.path_length_m += std::hypot(traj[k].pose.x - traj[k - 1].pose.x, traj[k].pose.y - traj[k - 1].pose.y);
     const auto people = person_class >= 0 ? simulatePeople(obstacles, w.rooms, params.people, times, rng_people)
                                           : std::vector<std::vector<mrpt::math::TPose2D>>{};
     std::vector<Eigen::Vector3d> person_size;
@@ -113,7 +141,10 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     int last_pct = -1;
     for (std::size_t k = 1; k < traj.size(); ++k) {
         const double t = traj[k].t_s;
-        const mrpt::poses::CPose2D inc = mrpt::poses::CPose2D(traj[k].pose) - mrpt::poses::CPose2D(traj[k - 1].pose);
+        // the teleport's step: the wheels did not turn, the odometry shows no jump (its noise is drawn as always)
+        const mrpt::poses::CPose2D inc = k == jump_step
+                                             ? mrpt::poses::CPose2D()
+                                             : mrpt::poses::CPose2D(traj[k].pose) - mrpt::poses::CPose2D(traj[k - 1].pose);
         mrpt::obs::CActionCollection acts;
         acts.insert(odometryAction(inc, params.odometry, t, rng_odo));
         mrpt::obs::CSensoryFrame sf;
@@ -162,7 +193,12 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     file.close();
     io::writeTum(out_dir + "/groundtruth.tum", traj);
     world::saveWorld(w, out_dir + "/world");
-    writeOverviewPng(w, traj, out_dir + "/overview.png");
+    saveChangesJson(summary.changes, w.objects.class_names, out_dir + "/changes.json");
+    const std::string kidnap_path = out_dir + "/kidnap.json";
+    if (summary.kidnap) saveKidnapJson(*summary.kidnap, kidnap_path);
+    else if (mrpt::system::fileExists(kidnap_path) && !mrpt::system::deleteFile(kidnap_path))  // not from an older run
+        throw std::runtime_error("cannot remove the stale '" + kidnap_path + "'");
+    writeOverviewPng(w, traj, out_dir + "/overview.png", jump_step);
     return summary;
 }
 

@@ -49,15 +49,20 @@ std::string SimApp::usage() {
            "  simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]\n"
            "      writes the world directory W (floorplan.yaml/.png, rooms.png, objects.json)\n"
            "  simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]\n"
-           "      writes Q/sequence.rawlog, Q/groundtruth.tum, Q/world/ and Q/overview.png\n"
-           "      (--world-in W is a synonym of --world)\n"
+           "                    [--kidnap-at SEC]\n"
+           "      writes Q/sequence.rawlog, Q/groundtruth.tum, Q/world/, Q/changes.json and Q/overview.png\n"
+           "      (+ Q/kidnap.json with --kidnap-at; --world-in W is a synonym of --world)\n"
            "\n"
            "  --seed S       every random choice derives from S (same S -> byte-identical files)\n"
            "  --config INI   MRPT .ini with the simulator's knobs (config_ini/sim.ini documents all)\n"
            "  --duration SEC simulated time (s), overrides [sequence] duration_s\n"
            "  --changes F    fraction in [0, 1] of objects removed/moved/added and of doors closed\n"
+           "                 (every change is listed in Q/changes.json)\n"
            "  --coverage     visit the rooms nearest-first with a full turn in each (a mapping run);\n"
            "                 same as [trajectory] visit_order = coverage\n"
+           "  --kidnap-at SEC  at SEC s after the start (0 <= SEC <= duration) teleport the robot once to a random\n"
+           "                 free pose >= [sequence] kidnap_min_distance_m (3 m) away; odometry does not show it,\n"
+           "                 Q/groundtruth.tum does; Q/kidnap.json records it. Overrides [sequence] kidnap_at_s\n"
            "  --size-m2 A    target floor area (m^2) of the built-in office; --rooms N: number of rooms\n";
 }
 
@@ -93,6 +98,7 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
         } else if (command == "sequence" && (opt == "--world" || opt == "--world-in")) world_dir = v;
         else if (command == "sequence" && opt == "--duration") duration_s = parseNumber(opt, v);
         else if (command == "sequence" && opt == "--changes") changes = parseNumber(opt, v);
+        else if (command == "sequence" && opt == "--kidnap-at") kidnap_at_s = parseNumber(opt, v);
         else throw std::invalid_argument("unknown option '" + opt + "' for command '" + command + "'");
     }
     if (!seed_given) throw std::invalid_argument("option --seed is required");
@@ -105,6 +111,9 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
         if (world_dir.empty()) throw std::invalid_argument("option --world is required");
         if (duration_s && !(*duration_s > 0)) throw std::invalid_argument("option --duration must be > 0");
         if (changes && !(*changes >= 0 && *changes <= 1)) throw std::invalid_argument("option --changes must be in [0, 1]");
+        // negative means "off" only in the .ini (its default); on the command line it is a mistake
+        if (kidnap_at_s && !(*kidnap_at_s >= 0))
+            throw std::invalid_argument("option --kidnap-at must be >= 0 (s after the start of the sequence)");
     }
     return true;
 }
@@ -134,6 +143,8 @@ void SimApp::run(std::ostream& out) {
     if (duration_s) p.duration_s = *duration_s;
     if (changes) p.changes.fraction = *changes;
     if (coverage) p.trajectory.coverage = true;
+    if (kidnap_at_s) p.kidnap_at_s = *kidnap_at_s;
+    p.validateKidnap(kidnap_at_s ? "option --kidnap-at" : "[sequence] kidnap_at_s");  // against the final duration
     if (!mrpt::system::directoryExists(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     const world::World w = world::loadWorld(world_dir);
     const auto s = simulateSequence(w, p, seed, out_dir);
@@ -142,6 +153,13 @@ void SimApp::run(std::ostream& out) {
         << s.phantom_detections << " phantoms, path " << s.path_length_m << " m; changes: " << s.changes.removed
         << " removed, " << s.changes.moved << " moved, " << s.changes.added << " added, " << s.changes.doors_closed
         << " doors closed\n";
+    if (s.kidnap) {
+        const auto& k = *s.kidnap;
+        out << "simp-sim: kidnapped at t = " << k.t_from_start_s << " s (step " << k.step << ") from (" << k.from.x
+            << ", " << k.from.y << ", " << k.from.phi << ") to (" << k.to.x << ", " << k.to.y << ", " << k.to.phi
+            << ") (x m, y m, phi rad), " << std::hypot(k.to.x - k.from.x, k.to.y - k.from.y) << " m; see "
+            << out_dir << "/kidnap.json\n";
+    }
 }
 
 }  // namespace simp::sim

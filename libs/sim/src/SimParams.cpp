@@ -2,9 +2,20 @@
 #include <simp/sim/SimParams.h>
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::sim {
+namespace {
+
+/// "70", "12.5": seconds in messages as the user wrote them (std::to_string gives "70.000000").
+std::string shortText(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+}  // namespace
 
 void OdometryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
     rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
@@ -27,6 +38,12 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
     progress = cfg.read_bool("sequence", "progress", progress);
     if (!(duration_s > 0 && duration_s <= 1e6)) throw std::invalid_argument("[sequence] duration_s must be in (0, 1e6]");
     if (!(epoch_s >= 0 && epoch_s < 4e9)) throw std::invalid_argument("[sequence] epoch_s must be in [0, 4e9)");
+    kidnap_at_s = cfg.read_double("sequence", "kidnap_at_s", kidnap_at_s);
+    kidnap_min_distance_m = cfg.read_double("sequence", "kidnap_min_distance_m", kidnap_min_distance_m);
+    if (!std::isfinite(kidnap_at_s))
+        throw std::invalid_argument("[sequence] kidnap_at_s must be a finite number (s after the start; < 0: no kidnap)");
+    if (!(kidnap_min_distance_m >= 0 && kidnap_min_distance_m <= 1e3))
+        throw std::invalid_argument("[sequence] kidnap_min_distance_m must be in [0, 1000]");
     trajectory.loadFromConfig(cfg, "trajectory");
     odometry.loadFromConfig(cfg, "odometry");
     cameras.loadFromConfig(cfg, "cameras");
@@ -35,6 +52,13 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
     false_positives.loadFromConfig(cfg, "false_positives");
     people.loadFromConfig(cfg, "people");
     changes.loadFromConfig(cfg, "changes");
+}
+
+void SimParams::validateKidnap(const std::string& what) const {
+    if (!std::isfinite(kidnap_at_s)) throw std::invalid_argument(what + " must be a finite number of seconds");
+    if (kidnap_at_s > duration_s)
+        throw std::invalid_argument(what + ": " + shortText(kidnap_at_s) + " s is beyond the duration of " +
+                                    shortText(duration_s) + " s");
 }
 
 }  // namespace simp::sim

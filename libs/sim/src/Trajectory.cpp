@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::sim {
@@ -137,10 +138,33 @@ std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMa
     return goals;
 }
 
+std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Eigen::Vector2d& from_m,
+                                                  double min_distance_m, double margin_m, Rng& rng) {
+    const auto dist = clearance(cspace);
+    // the goals' free area: from anywhere else the robot could not plan on
+    const auto reachable = largestFreeComponent(cspace, dist);
+    std::vector<std::size_t> cells;
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx) {
+            const std::size_t i = static_cast<std::size_t>(cy) * cspace.nx + cx;
+            if (!reachable[i] || dist[i] <= 0 || dist[i] < margin_m) continue;
+            if ((Eigen::Vector2d(cspace.centreX(cx), cspace.centreY(cy)) - from_m).norm() < min_distance_m) continue;
+            cells.push_back(i);
+        }
+    if (cells.empty()) return std::nullopt;
+    const std::size_t i = cells[rng.index(cells.size())];
+    const int cx = static_cast<int>(i % static_cast<std::size_t>(cspace.nx)), cy = static_cast<int>(i / static_cast<std::size_t>(cspace.nx));
+    return mrpt::math::TPose2D(cspace.centreX(cx), cspace.centreY(cy), rng.uniform(-M_PI, M_PI));
+}
+
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
-                                                  double duration_s, Rng& rng) {
+                                                  double duration_s, Rng& rng, const KidnapParams& kidnap,
+                                                  Rng* kidnap_rng, KidnapEvent* kidnap_event) {
     if (!(dt_s > 0) || !(duration_s >= 0)) throw std::invalid_argument("generateTrajectory: dt must be > 0, duration >= 0");
+    const bool kidnapped = kidnap.at_s >= 0;
+    if (kidnapped && (!kidnap_rng || !kidnap_event))
+        throw std::invalid_argument("generateTrajectory: a kidnap needs kidnap_rng and kidnap_event");
     const Raster cspace = inflate(obstacles, p.robot_radius_m + p.clearance_m);
     std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms, p.coverage ? p.coverage_part_m : 0.0);
     if (goals.empty())
@@ -185,8 +209,33 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
 
     std::vector<io::StampedPose2D> out;
     const auto n = static_cast<std::size_t>(std::floor(duration_s / dt_s + 1e-9)) + 1;
+    std::size_t kidnap_step = 0;  // 0 = none (pose 0 is the start)
+    if (kidnapped) {
+        if (n < 2) throw std::runtime_error("generateTrajectory: a kidnap needs at least one step (duration >= dt)");
+        // the first pose at or after t0 + at_s; the 1e-9 absorbs rounding (at 15 Hz, 16.6 / (1 / 15.0) is
+        // 249.00000000000003, which would move the teleport one pose later)
+        const double k = std::ceil(kidnap.at_s / dt_s - 1e-9);
+        kidnap_step = static_cast<std::size_t>(std::clamp(k, 1.0, static_cast<double>(n - 1)));
+    }
     out.reserve(n);
     for (std::size_t k = 0; k < n; ++k) {
+        if (k == kidnap_step && kidnapped) {
+            // lifted during step k: the motion integrated for it is discarded (the wheels did not turn)
+            const mrpt::math::TPose2D from = out.back().pose;
+            const auto to = drawKidnapPose(cspace, {from.x, from.y}, kidnap.min_distance_m, kidnap.margin_m, *kidnap_rng);
+            if (!to) {
+                std::ostringstream msg;
+                msg << "kidnap at " << kidnap.at_s << " s: no free cell of the robot's area is " << kidnap.min_distance_m
+                    << " m or more from (" << from.x << ", " << from.y << ") (see [sequence] kidnap_min_distance_m)";
+                throw std::runtime_error(msg.str());
+            }
+            d.pose = *to;
+            d.waypoints.clear();  // plan from the new pose
+            d.next = 0;
+            d.spin_left_rad = 0;
+            failures = 0;
+            *kidnap_event = {k, t0_s + static_cast<double>(k) * dt_s, static_cast<double>(k) * dt_s, from, *to};
+        }
         out.push_back({t0_s + static_cast<double>(k) * dt_s, d.pose});
         double v = 0, w = 0;
         if (d.spin_left_rad > 0) {

@@ -82,8 +82,10 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
     const double door_fraction = p.door_close_fraction < 0 ? p.fraction : p.door_close_fraction;
     const auto n_doors = static_cast<std::size_t>(std::lround(door_fraction * static_cast<double>(doors.size())));
     for (std::size_t i = doors.size(); i > 1; --i) std::swap(doors[i - 1], doors[rng.index(i)]);
+    std::vector<std::size_t> closed;
     for (std::size_t k = 0; k < n_doors; ++k) {
         closeDoor(w, w.objects.objects[doors[k]]);
+        closed.push_back(doors[k]);
         ++s.doors_closed;
     }
 
@@ -147,6 +149,20 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
             break;
         }
     }
+    // the record of Q/changes.json; drawing nothing, it leaves every random number as it was
+    using Kind = ObjectChange::Kind;
+    const std::size_t n_map = map.objects.objects.size();
+    std::vector<bool> was_moved(n_map, false);
+    for (std::size_t k = n_remove; k < n_remove + n_move && k < others.size(); ++k) was_moved[others[k]] = !drop[others[k]];
+    for (std::size_t i = 0; i < n_map; ++i)
+        if (drop[i]) s.changes.push_back({Kind::Removed, map.objects.objects[i], std::nullopt});
+    for (std::size_t i = 0; i < n_map; ++i)
+        if (was_moved[i]) s.changes.push_back({Kind::Moved, map.objects.objects[i], w.objects.objects[i]});
+    for (std::size_t i = n_map; i < w.objects.objects.size(); ++i)
+        s.changes.push_back({Kind::Added, std::nullopt, w.objects.objects[i]});
+    std::sort(closed.begin(), closed.end());
+    for (const std::size_t i : closed) s.changes.push_back({Kind::DoorClosed, map.objects.objects[i], w.objects.objects[i]});
+
     std::vector<world::MapObject> kept;
     for (std::size_t i = 0; i < w.objects.objects.size(); ++i)
         if (!drop[i]) kept.push_back(w.objects.objects[i]);

@@ -8,6 +8,7 @@
 #include <simp/world/World.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,21 +22,26 @@ struct SequenceSummary {
     std::size_t person_detections = 0;
     std::size_t phantom_detections = 0;
     ChangeSummary changes;
-    double path_length_m = 0;
+    double path_length_m = 0;          ///< driven path (m; the teleport of a kidnap not included)
+    std::optional<KidnapEvent> kidnap; ///< the teleport, when params.kidnap_at_s >= 0
 };
 
 /// Simulates one sequence in `map_world` (changed by params.changes first) and writes
-/// `out_dir`/sequence.rawlog, groundtruth.tum, world/ and overview.png. Every random choice
+/// `out_dir`/sequence.rawlog, groundtruth.tum, world/, changes.json, overview.png and, with
+/// params.kidnap_at_s >= 0, kidnap.json (a stale one is removed otherwise). Every random choice
 /// comes from `seed`; the same inputs give byte-identical files (simulated time from
-/// params.epoch_s, never the wall clock).
+/// params.epoch_s, never the wall clock). The kidnap draws from a stream split off after all
+/// others, so without it every file is as before the kidnap existed.
 /// \throw std::runtime_error naming the file that cannot be written or the map that has no room
-/// for the robot.
+/// for the robot; std::invalid_argument for kidnap_at_s beyond the duration.
 SequenceSummary simulateSequence(const world::World& map_world, const SimParams& params, std::uint64_t seed,
                                  const std::string& out_dir);
 
 /// Draws the world (free white, walls black, unknown grey, object footprints coloured by class,
-/// person-free) and `trajectory` (red, start green) to a PNG.
+/// person-free) and `trajectory` (red, start green) to a PNG. With jump_step > 0 (a kidnap) the
+/// segment into pose jump_step is not drawn; a blue ring marks where the robot was lifted, an
+/// orange dot where it was put down.
 void writeOverviewPng(const world::World& world, const std::vector<io::StampedPose2D>& trajectory,
-                      const std::string& png_path);
+                      const std::string& png_path, std::size_t jump_step = 0);
 
 }  // namespace simp::sim

@@ -3,6 +3,7 @@
 /// The logic of the `simp-sim` program (apps/simp-sim is a try/catch around it):
 ///   simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]
 ///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]
+///                     [--kidnap-at SEC]
 
 #include <cstdint>
 #include <optional>
@@ -28,6 +29,7 @@ class SimApp {
     std::uint64_t seed = 0;
     bool seed_given = false;
     std::optional<double> size_m2, duration_s, changes;
+    std::optional<double> kidnap_at_s;  ///< --kidnap-at: teleport time after the start (s)
     bool coverage = false;  ///< --coverage
     std::optional<int> rooms;
 };

@@ -30,6 +30,11 @@ struct SimParams {
     double duration_s = 120;       ///< [sequence] duration_s: simulated time (s)
     double epoch_s = 1700000000.0; ///< [sequence] epoch_s: time stamp of the first pose (s since 1970, UTC)
     bool progress = true;          ///< [sequence] progress: report progress on stderr
+    /// [sequence] kidnap_at_s: time after the start (s) at which the robot is teleported once,
+    /// unseen by odometry (the kidnapped-robot problem); < 0: never. Must be <= duration_s.
+    double kidnap_at_s = -1;
+    /// [sequence] kidnap_min_distance_m: the teleport puts the robot at least this far away (m)
+    double kidnap_min_distance_m = 3.0;
     TrajectoryParams trajectory;
     OdometryParams odometry;
     CameraParams cameras;
@@ -41,8 +46,13 @@ struct SimParams {
 
     /// Reads sections sequence, trajectory, odometry, cameras, visibility, detector,
     /// false_positives, people, changes; missing keys keep defaults; bad values throw naming
-    /// section and key.
+    /// section and key. kidnap_at_s <= duration_s is checked by validateKidnap(), once
+    /// command-line options have overridden the duration.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
+
+    /// \throw std::invalid_argument naming `what` (the option or key that set kidnap_at_s) when
+    /// kidnap_at_s is not finite or lies beyond duration_s.
+    void validateKidnap(const std::string& what = "[sequence] kidnap_at_s") const;
 };
 
 }  // namespace simp::sim

@@ -11,6 +11,7 @@
 #include <simp/world/World.h>
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 namespace simp::sim {
@@ -40,11 +41,42 @@ struct TrajectoryParams {
 /// part_m > 0, every room's bounding box is cut into about part_m x part_m parts, one goal each.
 std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms, double part_m = 0.0);
 
+/// The kidnapped-robot problem: the robot is lifted once and put down elsewhere.
+struct KidnapParams {
+    double at_s = -1;             ///< time of the teleport after t0 (s); < 0: no kidnap
+    double min_distance_m = 3.0;  ///< the new position is at least this far from the old one (m)
+    /// c-space clearance of the new position (m): the robot is put down with this much room
+    /// beyond robot_radius_m + clearance_m, not grazing furniture
+    double margin_m = 0.1;
+};
+
+/// A teleport that happened: the wheels do not turn during step `step` (from pose step-1 to
+/// pose step), and pose `step` is `to` instead of the pose the robot drove to.
+struct KidnapEvent {
+    std::size_t step = 0;          ///< index of the first pose after the teleport (>= 1)
+    double t_s = 0;                ///< time stamp of that pose (s)
+    double t_from_start_s = 0;     ///< the same from the first pose, step * dt (s; t_s - t0 loses digits to the epoch)
+    mrpt::math::TPose2D from, to;  ///< pose `step - 1` (where it was lifted) and pose `step` (m, rad)
+};
+
+/// A random pose for a kidnapped robot: uniform over the cells of the largest connected free
+/// area of `cspace` (where the room goals are, so the robot can drive on) whose c-space
+/// clearance is at least `margin_m` and whose centre is at least `min_distance_m` from `from_m`;
+/// heading uniform in [-pi, pi). nullopt when no cell qualifies.
+std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Eigen::Vector2d& from_m,
+                                                  double min_distance_m, double margin_m, Rng& rng);
+
 /// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
 /// poses). `obstacles` = walls and object footprints of the world the robot drives in.
-/// \throw std::runtime_error when no goal is reachable (e.g. an empty map).
+/// With kidnap.at_s >= 0 the robot is teleported once, at the first pose at or after
+/// t0 + at_s (at least pose 1, at most the last one), to drawKidnapPose() drawn from
+/// `kidnap_rng` (a stream of its own: `rng` draws the same numbers up to the teleport as
+/// without it); the teleport is stored in `*kidnap_event`, and the robot plans from its new pose.
+/// \throw std::runtime_error when no goal is reachable (e.g. an empty map) or no pose for the
+/// kidnap qualifies; std::invalid_argument for a kidnap without kidnap_rng / kidnap_event.
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
-                                                  double duration_s, Rng& rng);
+                                                  double duration_s, Rng& rng, const KidnapParams& kidnap = {},
+                                                  Rng* kidnap_rng = nullptr, KidnapEvent* kidnap_event = nullptr);
 
 }  // namespace simp::sim

@@ -7,7 +7,9 @@
 #include <simp/sim/Random.h>
 #include <simp/world/World.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace simp::sim {
 
@@ -22,9 +24,23 @@ struct ChangeParams {
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
+/// One change applied to the world, as `Q/changes.json` lists it (doc/formats.md).
+struct ObjectChange {
+    enum class Kind { Removed, Moved, Added, DoorClosed };
+    Kind kind = Kind::Removed;
+    std::optional<world::MapObject> before;  ///< the object in the map (its id is the map's); none when added
+    std::optional<world::MapObject> after;   ///< the object in the changed world; none when removed
+};
+
+/// The name of a kind in changes.json: "removed", "moved", "added", "door_closed".
+const char* kindName(ObjectChange::Kind kind);
+
 /// What applyChanges() did.
 struct ChangeSummary {
     int removed = 0, moved = 0, added = 0, doors_closed = 0;
+    /// every change, grouped by kind in the order removed, moved, added, door_closed; within a
+    /// kind in the order of the objects in the map (added: in the changed world)
+    std::vector<ObjectChange> changes;
 };
 
 /// The world changed: of the n non-door objects, round(fraction * n) change, split evenly into
@@ -33,6 +49,11 @@ struct ChangeSummary {
 /// Objects never overlap each other or walls. Door closing blocks the door's wall gap in the
 /// floor plan. fraction = 0 and door_close_fraction <= 0 returns an identical copy.
 world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& rng, ChangeSummary* summary = nullptr);
+
+/// Writes `summary.changes` as the change file `path` (doc/formats.md "changes.json"; an
+/// empty list when nothing changed). `class_names` names the objects' class ids.
+/// \throw std::runtime_error naming the file when it cannot be written.
+void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string>& class_names, const std::string& path);
 
 /// Blocks the wall gap a door object stands in (free cells between wall cells on both sides of
 /// the door along its width).
