@@ -9,6 +9,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <simp/obs/BoundedArchive.h>
 #include <simp/obs/CObservationObjects3D.h>
+#include <simp/obs/ExampleRawlog.h>
 #include <simp/obs/RawlogReader.h>
 
 #include <algorithm>
@@ -189,5 +190,21 @@ TEST(HostileObservation, PlainArchivesStillHaveTheFixedMaxima) {
         FAIL() << "accepted";
     } catch (const std::exception& e) {
         EXPECT_THAT(e.what(), HasSubstr("exceeds the maximum"));
+    }
+}
+
+TEST(ExampleRawlogHostile, ParametersAreBounded) {
+    simp::obs::ExampleRawlogParams p;
+    p.frames = 0;  // a rawlog the project's reader rejects
+    EXPECT_THROW(simp::obs::validateExampleRawlogParams(p), std::invalid_argument);
+    p.frames = static_cast<std::size_t>(-1);  // --frames -1 through stoul
+    EXPECT_THROW(simp::obs::validateExampleRawlogParams(p), std::invalid_argument);
+    p.frames = 1;
+    p.detections = static_cast<std::size_t>(-3);
+    try {
+        simp::obs::validateExampleRawlogParams(p);
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_THAT(e.what(), HasSubstr("detections"));
     }
 }

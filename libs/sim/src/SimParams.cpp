@@ -25,7 +25,7 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
     duration_s = cfg.read_double("sequence", "duration_s", duration_s);
     epoch_s = cfg.read_double("sequence", "epoch_s", epoch_s);
     progress = cfg.read_bool("sequence", "progress", progress);
-    if (!(duration_s > 0 && duration_s <= 1e6)) throw std::invalid_argument("[sequence] duration_s must be in (0, 1e6]");
+    checkDuration(duration_s, "[sequence] duration_s");
     if (!(epoch_s >= 0 && epoch_s < 4e9)) throw std::invalid_argument("[sequence] epoch_s must be in [0, 4e9)");
     trajectory.loadFromConfig(cfg, "trajectory");
     odometry.loadFromConfig(cfg, "odometry");
