@@ -10,6 +10,12 @@
 #include <stdexcept>
 
 namespace simp::io {
+namespace {
+// Same bound as simp::obs::limits::kMaxCoordinate_m (libs/io does not depend on libs/obs).
+constexpr double kMaxTumCoordinate_m = 1e4;
+// Unix time up to the year 2286; larger stamps lose sub-millisecond precision as doubles.
+constexpr double kMaxTumTime_s = 1e10;
+}  // namespace
 
 std::vector<StampedPose2D> readTum(const std::string& path) {
     std::ifstream f(path);
@@ -39,6 +45,14 @@ std::vector<StampedPose2D> readTum(const std::string& path) {
         if (n != 8)
             throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) + ": " +
                                      std::to_string(n) + " columns, expected 8 (t x y z qx qy qz qw)");
+        // Poses of a building (doc/formats.md limits): a coordinate beyond it is a broken file.
+        for (int k = 1; k <= 3; ++k)
+            if (std::abs(v[k]) > kMaxTumCoordinate_m)
+                throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) + ": coordinate " +
+                                         std::to_string(v[k]) + " m beyond the maximum 1e4 m");
+        if (std::abs(v[0]) > kMaxTumTime_s)
+            throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) + ": time stamp " +
+                                     std::to_string(v[0]) + " s beyond the maximum |t| = 1e10 s");
         const double qx = v[4], qy = v[5], qz = v[6], qw = v[7];
         const double qn = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
         if (qn < 1e-9)

@@ -3,6 +3,7 @@
 
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/labels/CameraFrames.h>
 
 #include <set>
@@ -54,9 +55,16 @@ std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRi
             out.push_back(im);
             continue;
         }
-        im.width = static_cast<int>(world::asInteger(world::requireKey(o, "width", path, k + ".width"), path, k + ".width"));
-        im.height = static_cast<int>(world::asInteger(world::requireKey(o, "height", path, k + ".height"), path, k + ".height"));
-        if (im.width <= 0 || im.height <= 0) world::failAt(path, k + ".width/height", "must be > 0 px");
+        const long long w = world::asInteger(world::requireKey(o, "width", path, k + ".width"), path, k + ".width");
+        const long long h = world::asInteger(world::requireKey(o, "height", path, k + ".height"), path, k + ".height");
+        if (w <= 0 || h <= 0) world::failAt(path, k + ".width/height", "must be > 0 px");
+        // Labels work per pixel: a 2e9 x 2e9 px image once ran for minutes (doc/formats.md limits).
+        if (w > obs::limits::kMaxImageSide_px || h > obs::limits::kMaxImageSide_px)
+            world::failAt(path, k + ".width/height",
+                          std::to_string(w) + " x " + std::to_string(h) + " px exceeds the maximum side " +
+                              std::to_string(obs::limits::kMaxImageSide_px) + " px");
+        im.width = static_cast<int>(w);
+        im.height = static_cast<int>(h);
         im.K = detail::matrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
         if (!(im.K(0, 0) > 0) || !(im.K(1, 1) > 0) || im.K(1, 0) != 0 || im.K(2, 0) != 0 || im.K(2, 1) != 0 || im.K(2, 2) != 1)
             world::failAt(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");

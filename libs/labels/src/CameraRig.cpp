@@ -3,6 +3,7 @@
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/string_utils.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/labels/CameraRig.h>
 #include <simp/obs/CObservationObjects3D.h>
 
@@ -41,6 +42,11 @@ RigCamera cameraFrom(const std::string& name, const std::function<double(const s
     if (!(fx > 0) || !(fy > 0)) world::failAt(file, where + ".fx/fy", "focal lengths must be > 0 px");
     if (!(w >= 1) || !(h >= 1) || std::floor(w) != w || std::floor(h) != h)
         world::failAt(file, where + ".width/height", "expected positive integers (px)");
+    if (w > obs::limits::kMaxImageSide_px || h > obs::limits::kMaxImageSide_px)
+        world::failAt(file, where + ".width/height",
+                      "image side exceeds the maximum " + std::to_string(obs::limits::kMaxImageSide_px) + " px");
+    for (double v : {c.x_m, c.y_m, c.z_m})
+        if (!(std::abs(v) <= 100.0)) world::failAt(file, where + ".x/y/z", "camera more than 100 m from the robot");
     c.intrinsics.ncols = static_cast<uint32_t>(w);
     c.intrinsics.nrows = static_cast<uint32_t>(h);
     c.intrinsics.setIntrinsicParamsFromValues(fx, fy, cx, cy);

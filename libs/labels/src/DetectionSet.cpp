@@ -31,8 +31,11 @@ std::vector<obs::RawlogFrame> framesFromDetections(const DetectionSet& set, cons
             if (!io::interpolatePose(poses, im->timestamp_s, p)) {
                 std::ostringstream msg;
                 msg.precision(17);
-                msg << where << ": time outside the poses' range [" << poses.front().t_s << ", " << poses.back().t_s
-                    << "] s";
+                if (poses.empty())  // an empty poses file: no range to name (front() would be UB)
+                    msg << where << ": no poses to interpolate (the poses file has no pose)";
+                else
+                    msg << where << ": time outside the poses' range [" << poses.front().t_s << ", "
+                        << poses.back().t_s << "] s";
                 throw std::runtime_error(msg.str());
             }
             obs::RawlogFrame f;

@@ -31,14 +31,22 @@ CObjectMap::TMapDefinition::TMapDefinition() = default;
 
 void CObjectMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::config::CConfigFileBase& source,
                                                                  const std::string& sectionNamePrefix) {
-    const std::string creation = sectionNamePrefix + "_creationOpts";
-    MRPT_LOAD_CONFIG_VAR(map_file, string, source, creation);
-    MRPT_LOAD_CONFIG_VAR(class_names, string, source, creation);
-    likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
-    insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
+    // Never throws: see load_error (the leak LeakSanitizer found in MRPT's loader).
+    load_error.clear();
+    try {
+        const std::string creation = sectionNamePrefix + "_creationOpts";
+        MRPT_LOAD_CONFIG_VAR(map_file, string, source, creation);
+        MRPT_LOAD_CONFIG_VAR(class_names, string, source, creation);
+        likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
+        insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
+    } catch (const std::exception& e) {
+        load_error = e.what();
+        if (load_error.empty()) load_error = "semanticObjectMap: invalid options in [" + sectionNamePrefix + "_*]";
+    }
 }
 
 void CObjectMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
+    if (!load_error.empty()) out << "load error                              = " << load_error << "\n";
     out << "map_file                                = " << (map_file.empty() ? "(none: empty map)" : map_file) << "\n";
     out << "class_names                             = " << (class_names.empty() ? "(from the map file)" : class_names)
         << "\n";
@@ -48,6 +56,7 @@ void CObjectMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out
 
 mrpt::maps::CMetricMap* CObjectMap::internal_CreateFromMapDefinition(const mrpt::maps::TMetricMapInitializer& _def) {
     const auto& def = dynamic_cast<const CObjectMap::TMapDefinition&>(_def);
+    if (!def.load_error.empty()) throw std::invalid_argument(def.load_error);
     auto obj = std::make_unique<CObjectMap>();
     obj->likelihoodOptions = def.likelihoodOpts;
     obj->insertionOptions = def.insertionOpts;

@@ -1,8 +1,12 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/serialization/stl_serialization.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/obs/ArchiveRead.h>
+#include <simp/obs/InputLimits.h>
+#include <simp/world/ObjectMapData.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <stdexcept>
@@ -15,6 +19,7 @@ namespace {
 // Version history (doc/object-map.md):
 //  0: generic map params, likelihood options, class names + class noise, objects
 constexpr std::uint8_t kVersion = 0;
+const std::string kWhere = "CObjectMap archive";
 
 void writeNoise(mrpt::serialization::CArchive& out, const std::optional<simp::world::NoiseModel>& n) {
     out << n.has_value();
@@ -23,10 +28,8 @@ void writeNoise(mrpt::serialization::CArchive& out, const std::optional<simp::wo
         << n->exponent_b;
 }
 
-std::optional<simp::world::NoiseModel> readNoise(mrpt::serialization::CArchive& in) {
-    bool has = false;
-    in >> has;
-    if (!has) return std::nullopt;
+std::optional<simp::world::NoiseModel> readNoise(mrpt::serialization::CArchive& in, const std::string& what) {
+    if (!simp::obs::archive::readBool(in, what + ": field 'has_noise'")) return std::nullopt;
     simp::world::NoiseModel n;
     in >> n.mean_m.x() >> n.mean_m.y() >> n.cov_m2(0, 0) >> n.cov_m2(0, 1) >> n.cov_m2(1, 0) >> n.cov_m2(1, 1) >>
         n.exponent_b;
@@ -66,30 +69,42 @@ void CObjectMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t versio
             in >> genericMapParams;
             TLikelihoodOptions o;
             std::string model, thresholds;
-            in >> model >> o.eta >> thresholds >> o.default_confidence_threshold >> o.mp_resolution_m >>
-                o.mp_min_probability >> o.skip_classes_without_noise >> o.edt_sigma_m >> o.edt_max_distance_m >>
-                o.edt_resolution_m;
+            // Untrusted bytes: lengths and counts are checked before allocating (ArchiveRead.h),
+            // bools must be 0/1; the content is validated by validateObjectMap (limits of
+            // doc/formats.md) before it replaces the current one.
+            namespace ar = simp::obs::archive;
+            namespace lim = simp::obs::limits;
+            model = ar::readString(in, lim::kMaxNameLength, kWhere + ": field 'sensor_model'");
+            in >> o.eta;
+            thresholds = ar::readString(in, 64 * lim::kMaxNameLength, kWhere + ": field 'confidence_thresholds'");
+            in >> o.default_confidence_threshold >> o.mp_resolution_m >> o.mp_min_probability;
+            o.skip_classes_without_noise = ar::readBool(in, kWhere + ": field 'skip_classes_without_noise'");
+            in >> o.edt_sigma_m >> o.edt_max_distance_m >> o.edt_resolution_m;
             o.sensor_model = parseSensorModelType(model);
             o.confidence_thresholds = parseConfidenceThresholds(thresholds, "CObjectMap archive: confidence_thresholds");
 
             simp::world::ObjectMapData data;
-            in >> data.class_names;
-            const auto num_noise = in.ReadAs<uint32_t>();
+            data.class_names =
+                ar::readStringList(in, lim::kMaxClasses, lim::kMaxNameLength, kWhere + ": field 'class_names'");
+            // A noise entry takes >= 1 byte (its flag), an object >= 105 (id, class, 10 doubles,
+            // 3 counters, noise flag).
+            const auto num_noise = ar::readCount(in, 1, lim::kMaxClasses, kWhere + ": class noise count");
             data.class_noise.resize(num_noise);
-            for (auto& n : data.class_noise) n = readNoise(in);
-            const auto num_objects = in.ReadAs<uint32_t>();
+            for (std::size_t c = 0; c < num_noise; ++c)
+                data.class_noise[c] = readNoise(in, kWhere + ": class_noise[" + std::to_string(c) + "]");
+            const auto num_objects = ar::readCount(in, 105, lim::kMaxMapObjects, kWhere + ": object count");
             data.objects.resize(num_objects);
             for (std::size_t i = 0; i < num_objects; ++i) {
+                const std::string where = kWhere + ": object #" + std::to_string(i);
                 auto& obj = data.objects[i];
                 int32_t class_id, n_match, n_skip, room_id;
                 double cx, cy, cz, w, h, l, qw, qx, qy, qz;
                 in >> obj.id >> class_id >> cx >> cy >> cz >> w >> h >> l >> qw >> qx >> qy >> qz >> n_match >> n_skip >>
                     room_id;
-                obj.noise = readNoise(in);
+                obj.noise = readNoise(in, where);
                 const Eigen::Quaterniond q(qw, qx, qy, qz);
                 if (!std::isfinite(q.norm()) || std::abs(q.norm() - 1.0) > 1e-3)
-                    throw std::invalid_argument("CObjectMap archive: object #" + std::to_string(i) +
-                                                ": rotation is not a unit quaternion");
+                    throw std::invalid_argument(where + ": rotation is not a unit quaternion");
                 obj.class_id = class_id;
                 obj.box.center = {cx, cy, cz};
                 obj.box.size = {w, h, l};
@@ -98,6 +113,10 @@ void CObjectMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t versio
                 obj.n_skip = n_skip;
                 obj.room_id = room_id;
             }
+            for (double v : {o.eta, o.default_confidence_threshold, o.mp_resolution_m, o.mp_min_probability,
+                             o.edt_sigma_m, o.edt_max_distance_m, o.edt_resolution_m})
+                if (!std::isfinite(v)) throw std::invalid_argument(kWhere + ": a likelihood option is not finite");
+            simp::world::validateObjectMap(data, kWhere);
             likelihoodOptions = o;
             setData(data);
         } break;

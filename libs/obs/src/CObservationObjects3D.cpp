@@ -2,10 +2,14 @@
 #include <mrpt/serialization/stl_serialization.h>
 #include <mrpt/system/datetime.h>
 #include <simp/geometry/Footprint.h>
+#include <simp/obs/ArchiveRead.h>
 #include <simp/obs/CObservationObjects3D.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <iomanip>
 #include <sstream>
@@ -30,6 +34,17 @@ Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& p) {
 }
 
 std::string detectionWhere(std::size_t i) { return "detection #" + std::to_string(i); }
+
+/// A camera pose read from a file: finite and within limits::kMaxCoordinate_m of the robot.
+void validateCameraPose(const mrpt::poses::CPose3D& p) {
+    const auto R = p.getRotationMatrix().asEigen();
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()) || !R.allFinite())
+        throw std::invalid_argument("observation: field 'camera_pose' is not finite");
+    const double m = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+    if (m > limits::kMaxCoordinate_m)
+        throw std::invalid_argument("observation: field 'camera_pose' translation " + std::to_string(m) +
+                                    " m exceeds the maximum " + std::to_string(limits::kMaxCoordinate_m) + " m");
+}
 
 }  // namespace
 
@@ -130,26 +145,38 @@ void CObservationObjects3D::serializeTo(mrpt::serialization::CArchive& out) cons
 }
 
 void CObservationObjects3D::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version) {
+    // The archive is untrusted (rawlogs travel between labs): counts and lengths are checked
+    // against doc/formats.md's limits and the bytes left before anything is allocated
+    // (ArchiveRead.h), bool bytes must be 0 or 1, numbers are validated per field.
     switch (version) {
         case 0:
         case 1: {
-            in >> timestamp >> sensorLabel >> m_camera_pose >> m_class_names;
+            namespace ar = archive;
+            in >> timestamp;
+            sensorLabel = ar::readString(in, limits::kMaxNameLength, "observation: field 'sensorLabel'");
+            in >> m_camera_pose;
+            validateCameraPose(m_camera_pose);
+            m_class_names = ar::readStringList(in, limits::kMaxClasses, limits::kMaxNameLength,
+                                               "observation: field 'class_names'");
             m_intrinsics.reset();
             m_image_width = 640;
             m_image_height = 480;
             if (version >= 1) {
-                bool has_intrinsics = false;
-                in >> m_image_width >> m_image_height >> has_intrinsics;
-                if (has_intrinsics) {
-                    mrpt::img::TCamera K;
-                    in >> K;
-                    m_intrinsics = K;
-                }
+                in >> m_image_width >> m_image_height;
+                if (m_image_width > limits::kMaxImageSide_px || m_image_height > limits::kMaxImageSide_px)
+                    throw std::invalid_argument("observation: field 'image size' = " + std::to_string(m_image_width) +
+                                                " x " + std::to_string(m_image_height) + " px exceeds the maximum side " +
+                                                std::to_string(limits::kMaxImageSide_px) + " px");
+                if (ar::readBool(in, "observation: field 'has_intrinsics'"))
+                    m_intrinsics = ar::readCamera(in, "observation: field 'intrinsics'");
             }
-            const auto n = in.ReadAs<uint32_t>();
-            std::vector<Detection3D> dets(n);
+            // Smallest detection on the wire: class (2) + confidence (4) + 10 doubles, + 2 flags in v1.
+            const std::size_t min_bytes = 2 + 4 + 10 * 8 + (version >= 1 ? 2 : 0);
+            const auto n = ar::readCount(in, min_bytes, limits::kMaxDetectionsPerFrame, "observation: detection count");
+            std::vector<Detection3D> dets;
+            dets.reserve(n);
             for (std::size_t i = 0; i < n; ++i) {
-                auto& d = dets[i];
+                Detection3D d;
                 double cx, cy, cz, w, h, l, qw, qx, qy, qz;
                 in >> d.class_id >> d.confidence >> cx >> cy >> cz >> w >> h >> l >> qw >> qx >> qy >> qz;
                 d.box_in_camera.center = {cx, cy, cz};
@@ -161,21 +188,19 @@ void CObservationObjects3D::serializeFrom(mrpt::serialization::CArchive& in, uin
                                                 ": field 'rotation' is not a unit quaternion in the archive");
                 d.box_in_camera.R = q.normalized().toRotationMatrix();
                 if (version >= 1) {
-                    bool has_2d = false, has_id = false;
-                    in >> has_2d;
-                    if (has_2d) {
+                    if (ar::readBool(in, detectionWhere(i) + ": field 'has_box_2d'")) {
                         ImageBox2D r;
                         in >> r.x_min >> r.y_min >> r.x_max >> r.y_max;
                         d.box_2d = r;
                     }
-                    in >> has_id;
-                    if (has_id) {
+                    if (ar::readBool(in, detectionWhere(i) + ": field 'has_detector_id'")) {
                         std::int64_t id;
                         in >> id;
                         d.detector_id = id;
                     }
                 }
                 validateDetection(d, m_class_names.size(), detectionWhere(i));
+                dets.push_back(d);
             }
             m_detections = std::move(dets);
             refreshCache();

@@ -1,4 +1,5 @@
 #include <simp/obs/Detection3D.h>
+#include <simp/obs/InputLimits.h>
 
 #include <cmath>
 #include <sstream>
@@ -29,6 +30,13 @@ void validateDetection(const Detection3D& d, std::size_t num_classes, const std:
     if (!b.center.allFinite()) reject(where, "center", "= " + vec3(b.center) + " is not finite");
     if (!b.size.allFinite()) reject(where, "size", "= " + vec3(b.size) + " is not finite");
     if ((b.size.array() <= 0.0).any()) reject(where, "size", "= " + vec3(b.size) + " must be > 0 (W, H, L in m)");
+    // Limits of doc/formats.md: beyond them a file is corrupted, not an office.
+    if (b.center.cwiseAbs().maxCoeff() > limits::kMaxCoordinate_m)
+        reject(where, "center", "= " + vec3(b.center) + " m is beyond the maximum coordinate " +
+                                    std::to_string(limits::kMaxCoordinate_m) + " m");
+    if (b.size.maxCoeff() > limits::kMaxBoxSide_m)
+        reject(where, "size", "= " + vec3(b.size) + " m exceeds the maximum box side " +
+                                  std::to_string(limits::kMaxBoxSide_m) + " m");
     if (!b.R.allFinite()) reject(where, "rotation", "is not finite");
     if (!b.isValid(1e-4)) reject(where, "rotation", "is not a rotation matrix (R^T R = I, det R = +1)");
     if (d.box_2d) {

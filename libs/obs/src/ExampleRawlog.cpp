@@ -6,6 +6,7 @@
 #include <mrpt/system/datetime.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/ExampleRawlog.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <cmath>
@@ -14,7 +15,24 @@
 
 namespace simp::obs {
 
+void validateExampleRawlogParams(const ExampleRawlogParams& p) {
+    // A rawlog without frames is one the project's own reader rejects; the upper bounds keep
+    // a typo from filling the disk (--frames -1 once wrapped to 2^64).
+    const auto check = [](std::size_t v, std::size_t lo, std::size_t hi, const char* name) {
+        if (v < lo || v > hi)
+            throw std::invalid_argument(std::string("example rawlog: ") + name + " = " + std::to_string(v) +
+                                        " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    };
+    check(p.frames, 1, kMaxExampleFrames, "frames");
+    check(p.cameras, 1, kMaxExampleCameras, "cameras");
+    check(p.detections, 0, limits::kMaxDetectionsPerFrame, "detections");
+    if (!(p.frame_period_s > 0 && p.frame_period_s <= 3600))
+        throw std::invalid_argument("example rawlog: frame_period_s = " + std::to_string(p.frame_period_s) +
+                                    " must be in (0, 3600] s");
+}
+
 std::size_t writeExampleRawlog(const std::string& path, const ExampleRawlogParams& params) {
+    validateExampleRawlogParams(params);
     mrpt::io::CFileOutputStream file;
     if (!file.open(path)) throw std::runtime_error("rawlog '" + path + "': cannot open for writing");
     auto archive = mrpt::serialization::archiveFrom(file);

@@ -5,6 +5,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
+#include <simp/obs/BoundedArchive.h>
 #include <simp/obs/RawlogReader.h>
 
 #include <filesystem>
@@ -70,26 +71,41 @@ struct Reader {
 std::vector<RawlogFrame> readRawlog(const std::string& path) {
     if (!std::filesystem::is_regular_file(path))
         throw std::runtime_error("rawlog '" + path + "': file does not exist");
+    std::uint64_t size = 0;
+    try {
+        size = uncompressedFileSize(path);
+    } catch (const std::exception& e) {
+        throw std::runtime_error("rawlog " + std::string(e.what()));
+    }
     mrpt::io::CFileGZInputStream file;
     if (!file.open(path)) throw std::runtime_error("rawlog '" + path + "': cannot open");
-    auto archive = mrpt::serialization::archiveFrom(file);
+    return readRawlog(file, size, path);
+}
+
+std::vector<RawlogFrame> readRawlog(mrpt::io::CStream& in, std::uint64_t size_bytes, const std::string& name) {
+    // Every object is read through a BoundedArchive: our readers and the guards for MRPT's
+    // vector-sizing readers compare the counts in the file with the bytes it still holds.
+    BoundedArchive archive(in, size_bytes, name);
     Reader r;
-    r.path = path;
+    r.path = name;
     for (std::size_t entry = 0;; ++entry) {
+        if (archive.bytesLeft() == 0) break;  // clean end between objects
         mrpt::serialization::CSerializable::Ptr obj;
         try {
-            obj = archive.ReadObject();
-        } catch (const mrpt::serialization::CExceptionEOF&) {
-            if (file.checkEOF()) break;  // clean end between objects
-            r.fail(entry, "file ends in the middle of an object (truncated)");
+            obj = archive.readObjectGuarded();
+        } catch (const mrpt::serialization::CExceptionEOF& e) {
+            r.fail(entry, std::string("file ends in the middle of an object (truncated): ") + e.what());
+        } catch (const std::bad_alloc&) {
+            r.fail(entry, "corrupted object: it claims more memory than available");
         } catch (const std::exception& e) {
-            if (file.checkEOF()) r.fail(entry, std::string("file ends in the middle of an object (truncated): ") + e.what());
+            if (archive.bytesLeft() == 0)
+                r.fail(entry, std::string("file ends in the middle of an object (truncated): ") + e.what());
             r.fail(entry, std::string("corrupted or unreadable object: ") + e.what());
         }
         if (!obj) r.fail(entry, "null object");
         r.handle(obj, entry);
     }
-    if (r.frames.empty()) throw std::runtime_error("rawlog '" + path + "': contains no 3D-object observations");
+    if (r.frames.empty()) throw std::runtime_error("rawlog '" + name + "': contains no 3D-object observations");
     return r.frames;
 }
 

@@ -36,7 +36,7 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
     duration_s = cfg.read_double("sequence", "duration_s", duration_s);
     epoch_s = cfg.read_double("sequence", "epoch_s", epoch_s);
     progress = cfg.read_bool("sequence", "progress", progress);
-    if (!(duration_s > 0 && duration_s <= 1e6)) throw std::invalid_argument("[sequence] duration_s must be in (0, 1e6]");
+    checkDuration(duration_s, "[sequence] duration_s");
     if (!(epoch_s >= 0 && epoch_s < 4e9)) throw std::invalid_argument("[sequence] epoch_s must be in [0, 4e9)");
     kidnap_at_s = cfg.read_double("sequence", "kidnap_at_s", kidnap_at_s);
     kidnap_min_distance_m = cfg.read_double("sequence", "kidnap_min_distance_m", kidnap_min_distance_m);

@@ -157,6 +157,12 @@ std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Ei
     return mrpt::math::TPose2D(cspace.centreX(cx), cspace.centreY(cy), rng.uniform(-M_PI, M_PI));
 }
 
+void checkDuration(double duration_s, const std::string& what) {
+    if (!(duration_s > 0 && duration_s <= kMaxDuration_s))
+        throw std::invalid_argument(what + " = " + std::to_string(duration_s) + " s must be in (0, " +
+                                    std::to_string(kMaxDuration_s) + "] s");
+}
+
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
                                                   double duration_s, Rng& rng, const KidnapParams& kidnap,
@@ -165,6 +171,12 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
     const bool kidnapped = kidnap.at_s >= 0;
     if (kidnapped && (!kidnap_rng || !kidnap_event))
         throw std::invalid_argument("generateTrajectory: a kidnap needs kidnap_rng and kidnap_event");
+    // Checked before the cast to an integer below (a double beyond size_t is UB).
+    if (duration_s > 0) checkDuration(duration_s, "generateTrajectory: duration");
+    if (duration_s / dt_s >= static_cast<double>(kMaxTrajectorySteps))
+        throw std::invalid_argument("generateTrajectory: duration " + std::to_string(duration_s) + " s at a step of " +
+                                    std::to_string(dt_s) + " s gives more than " +
+                                    std::to_string(kMaxTrajectorySteps) + " poses");
     const Raster cspace = inflate(obstacles, p.robot_radius_m + p.clearance_m);
     std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms, p.coverage ? p.coverage_part_m : 0.0);
     if (goals.empty())

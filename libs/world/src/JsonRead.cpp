@@ -20,7 +20,7 @@ json readJsonFile(const std::string& path) {
     if (!in) failAt(path, "", "cannot open for reading");
     try {
         return json::parse(in);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // parse errors and number overflow (out_of_range 406)
         failAt(path, "", std::string("invalid JSON: ") + e.what());
     }
 }
@@ -81,6 +81,8 @@ double asNumber(const json& v, const std::string& file, const std::string& key_p
 }
 
 long long asInteger(const json& v, const std::string& file, const std::string& key_path) {
+    if (v.is_number_unsigned() && v.get<unsigned long long>() > 9e15)
+        failAt(file, key_path, "integer " + v.dump() + " out of range");
     if (v.is_number_integer()) return v.get<long long>();
     if (v.is_number_float()) {
         const double d = v.get<double>();

@@ -6,7 +6,10 @@
 #include <simp/world/ObjectMapData.h>
 #include <simp/world/JsonRead.h>
 
+#include <limits>
 #include <set>
+#include <simp/obs/InputLimits.h>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::world {
@@ -14,6 +17,21 @@ namespace simp::world {
 namespace {
 
 using nlohmann::json;
+
+std::string number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+/// An int-typed counter of the file: an integer in [lo, hi] (a wider value would wrap).
+int asInt(const json& v, const std::string& file, const std::string& key, long long lo, long long hi) {
+    const long long x = asInteger(v, file, key);
+    if (x < lo || x > hi)
+        failAt(file, key, "expected an integer >= " + std::to_string(lo) + " and <= " + std::to_string(hi) +
+                              ", got " + std::to_string(x));
+    return static_cast<int>(x);
+}
 
 constexpr const char* kFormat = "simp-object-map";
 constexpr int kVersion = 1;
@@ -68,10 +86,17 @@ Eigen::Matrix3d rotationFromJson(const json& o, const std::string& file, const s
 
 void validateObjectMap(const ObjectMapData& d, const std::string& where) {
     if (d.class_names.empty()) failAt(where, "classes", "expected a non-empty list of class names");
+    if (d.class_names.size() > obs::limits::kMaxClasses)
+        failAt(where, "classes", std::to_string(d.class_names.size()) + " classes exceed the maximum " +
+                                     std::to_string(obs::limits::kMaxClasses));
+    if (d.objects.size() > obs::limits::kMaxMapObjects)
+        failAt(where, "objects", std::to_string(d.objects.size()) + " objects exceed the maximum " +
+                                     std::to_string(obs::limits::kMaxMapObjects));
     std::set<std::string> names;
     for (std::size_t i = 0; i < d.class_names.size(); ++i) {
         const std::string key = "classes[" + std::to_string(i) + "]";
         if (d.class_names[i].empty()) failAt(where, key, "empty class name");
+        if (d.class_names[i].size() > obs::limits::kMaxNameLength) failAt(where, key, "class name too long");
         if (!names.insert(d.class_names[i]).second)
             failAt(where, key, "duplicate class name '" + d.class_names[i] + "'");
     }
@@ -89,8 +114,14 @@ void validateObjectMap(const ObjectMapData& d, const std::string& where) {
         if (o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= d.class_names.size())
             failAt(where, key + ".class", "class id " + std::to_string(o.class_id) + " out of range");
         if (!o.box.center.allFinite()) failAt(where, key + ".center_m", "expected 3 finite numbers");
+        if (o.box.center.cwiseAbs().maxCoeff() > obs::limits::kMaxCoordinate_m)
+            failAt(where, key + ".center_m", "coordinate beyond the maximum " + number(obs::limits::kMaxCoordinate_m) +
+                                                 " m (got " + number(o.box.center.cwiseAbs().maxCoeff()) + ")");
         if (!o.box.size.allFinite() || (o.box.size.array() <= 0.0).any())
             failAt(where, key + ".size_m", "expected 3 positive numbers");
+        if (o.box.size.maxCoeff() > obs::limits::kMaxBoxSide_m)
+            failAt(where, key + ".size_m", "side " + number(o.box.size.maxCoeff()) + " m exceeds the maximum " +
+                                               number(obs::limits::kMaxBoxSide_m) + " m");
         if (!o.box.isValid(1e-6))
             failAt(where, key + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
         if (o.n_match < 0) failAt(where, key + ".n_match", "expected an integer >= 0");
@@ -151,9 +182,10 @@ ObjectMapData loadObjectMap(const std::string& path) {
         m.box.center = Eigen::Vector3d(c[0], c[1], c[2]);
         m.box.size = Eigen::Vector3d(s[0], s[1], s[2]);
         m.box.R = rotationFromJson(o, path, key);
-        if (o.contains("n_match")) m.n_match = static_cast<int>(asInteger(o["n_match"], path, key + ".n_match"));
-        if (o.contains("n_skip")) m.n_skip = static_cast<int>(asInteger(o["n_skip"], path, key + ".n_skip"));
-        if (o.contains("room")) m.room_id = static_cast<int>(asInteger(o["room"], path, key + ".room"));
+        constexpr long long kMaxCounter = std::numeric_limits<int>::max();
+        if (o.contains("n_match")) m.n_match = asInt(o["n_match"], path, key + ".n_match", 0, kMaxCounter);
+        if (o.contains("n_skip")) m.n_skip = asInt(o["n_skip"], path, key + ".n_skip", 0, kMaxCounter);
+        if (o.contains("room")) m.room_id = asInt(o["room"], path, key + ".room", 0, kMaxCounter);
         if (o.contains("noise") && !o["noise"].is_null()) m.noise = noiseFromJson(o["noise"], path, key + ".noise");
         d.objects.push_back(m);
     }
@@ -170,7 +202,8 @@ ObjectMapData loadObjectMap(const std::string& path) {
         for (std::size_t i = 0; i < rooms.size(); ++i) {
             const std::string key = "rooms[" + std::to_string(i) + "]";
             RoomInfo r;
-            r.id = static_cast<int>(asInteger(requireKey(rooms[i], "id", path, key + ".id"), path, key + ".id"));
+            r.id = asInt(requireKey(rooms[i], "id", path, key + ".id"), path, key + ".id", 1,
+                         std::numeric_limits<int>::max());
             if (rooms[i].contains("name")) r.name = asString(rooms[i]["name"], path, key + ".name");
             if (rooms[i].contains("category")) r.category = asString(rooms[i]["category"], path, key + ".category");
             d.rooms.push_back(r);

@@ -2,6 +2,7 @@
 /// The room raster: one room id per floor-plan pixel (0 = no room), row 0 = top of the image.
 
 #include <opencv2/imgcodecs.hpp>
+#include <simp/world/ImageLimits.h>
 #include <simp/world/World.h>
 
 #include <cmath>
@@ -47,8 +48,10 @@ int roomOfBox(const RoomMap& rooms, const geometry::Box3D& box) {
 
 RoomMap loadRoomMap(const std::string& png_path, double resolution_m, double origin_x_m, double origin_y_m) {
     if (!std::filesystem::exists(png_path)) throw std::runtime_error(png_path + ": file not found");
+    checkDeclaredRasterSize(png_path);  // before decoding: a small PNG can declare gigapixels
     const cv::Mat img = cv::imread(png_path, cv::IMREAD_UNCHANGED);
     if (img.empty()) throw std::runtime_error(png_path + ": cannot read the image");
+    checkRasterSize(png_path, {static_cast<std::uint64_t>(img.cols), static_cast<std::uint64_t>(img.rows)});
     if (img.channels() != 1 || (img.depth() != CV_8U && img.depth() != CV_16U))
         throw std::runtime_error(png_path + ": expected a single-channel 8-bit or 16-bit image of room ids");
     RoomMap r;

@@ -6,6 +6,8 @@
 #include <mrpt/containers/yaml.h>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <simp/obs/InputLimits.h>
+#include <simp/world/ImageLimits.h>
 #include <simp/world/World.h>
 
 #include <charconv>
@@ -72,6 +74,9 @@ RosMapYaml readRosMapYaml(const std::string& yaml_path) {
                                      : (std::filesystem::path(yaml_path).parent_path() / img).string();
     m.resolution_m = yamlNumber(y, "resolution", yaml_path);
     if (m.resolution_m <= 0) fail(yaml_path, "resolution: expected a positive number (m/pixel)");
+    if (m.resolution_m < kMinResolution_m || m.resolution_m > kMaxResolution_m)
+        fail(yaml_path, "resolution: " + std::to_string(m.resolution_m) + " m/pixel is outside [" +
+                            std::to_string(kMinResolution_m) + ", " + std::to_string(kMaxResolution_m) + "]");
     if (!y.has("origin")) fail(yaml_path, "origin: missing");
     std::vector<double> origin;
     try {
@@ -81,6 +86,8 @@ RosMapYaml readRosMapYaml(const std::string& yaml_path) {
     }
     if (origin.size() != 3 || !std::isfinite(origin[0]) || !std::isfinite(origin[1]) || !std::isfinite(origin[2]))
         fail(yaml_path, "origin: expected 3 finite numbers [x, y, yaw]");
+    if (std::abs(origin[0]) > obs::limits::kMaxCoordinate_m || std::abs(origin[1]) > obs::limits::kMaxCoordinate_m)
+        fail(yaml_path, "origin: coordinates beyond the maximum " + std::to_string(obs::limits::kMaxCoordinate_m) + " m");
     m.origin_x_m = origin[0];
     m.origin_y_m = origin[1];
     m.origin_yaw_rad = origin[2];
@@ -117,8 +124,10 @@ void setGridExactly(mrpt::maps::COccupancyGridMap2D& grid, double x_min_m, doubl
 void loadRosMap(const std::string& yaml_path, mrpt::maps::COccupancyGridMap2D& grid) {
     const RosMapYaml m = readRosMapYaml(yaml_path);
     if (!std::filesystem::exists(m.image_path)) fail(yaml_path, "image: file '" + m.image_path + "' not found");
+    checkDeclaredRasterSize(m.image_path);  // before decoding: a small PNG can declare gigapixels
     cv::Mat img = cv::imread(m.image_path, cv::IMREAD_UNCHANGED);
     if (img.empty()) fail(m.image_path, "cannot read the image (referenced by " + yaml_path + ")");
+    checkRasterSize(m.image_path, {static_cast<std::uint64_t>(img.cols), static_cast<std::uint64_t>(img.rows)});
     if (img.depth() == CV_16U) img.convertTo(img, CV_8U, 1.0 / 257.0);
     if (img.depth() != CV_8U) fail(m.image_path, "expected an 8-bit or 16-bit image");
     // map_server averages the colour channels (alpha ignored here).

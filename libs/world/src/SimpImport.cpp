@@ -200,7 +200,10 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         for (std::size_t i = 0; i < rooms.size(); ++i) {
             const std::string key = "rooms[" + std::to_string(i) + "]";
             RoomInfo r;
-            r.id = static_cast<int>(asInteger(requireKey(rooms[i], "id", fc_path, key + ".id"), fc_path, key + ".id")) + 1;
+            const long long raw_id = asInteger(requireKey(rooms[i], "id", fc_path, key + ".id"), fc_path, key + ".id");
+            if (raw_id < 0 || raw_id >= 65535)  // room ids are stored in a 16-bit raster, + 1
+                failAt(fc_path, key + ".id", "expected an integer in [0, 65534], got " + std::to_string(raw_id));
+            r.id = static_cast<int>(raw_id) + 1;
             if (rooms[i].contains("name")) r.name = asString(rooms[i]["name"], fc_path, key + ".name");
             if (rooms[i].contains("purpose")) {
                 const long long p = asInteger(rooms[i]["purpose"], fc_path, key + ".purpose");
@@ -261,6 +264,9 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
     for (std::size_t i = 0; i < n; ++i) {
         const std::string idx = "[" + std::to_string(i) + "]";
         MapObject o;
+        // The authors write uids as JSON integers; a float (-5.0, 3.5) or a negative uid is a broken file.
+        if (!uid[i].is_number_integer() || asInteger(uid[i], gv_path, "uid" + idx) < 0)
+            failAt(gv_path, "uid" + idx, "expected an integer >= 0, got " + uid[i].dump());
         o.id = asInteger(uid[i], gv_path, "uid" + idx);
         if (!seen.insert(o.id).second) failAt(gv_path, "uid" + idx, "duplicate uid " + std::to_string(o.id));
         if (category[i] != std::floor(category[i]) || category[i] < 0 || category[i] >= static_cast<double>(num_classes))

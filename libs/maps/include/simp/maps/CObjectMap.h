@@ -143,6 +143,10 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     std::string class_names;  ///< [_creationOpts] class_names: optional comma-separated class list
     simp::maps::CObjectMap::TLikelihoodOptions likelihoodOpts;
     simp::maps::CObjectMap::TInsertionOptions insertionOpts;
+    /// Why loading the options failed (empty = they loaded). MRPT 2.5's
+    /// TSetOfMetricMapInitializers holds a new definition by a raw pointer while it loads it and
+    /// leaks it when loading throws, so the error is kept here and thrown when the map is created.
+    std::string load_error;
     MAP_DEFINITION_END(CObjectMap)
 
    private:

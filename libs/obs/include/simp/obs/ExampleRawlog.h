@@ -18,6 +18,14 @@ struct ExampleRawlogParams {
 
 /// Writes `path` (MRPT rawlog, actions + sensory-frames format, uncompressed) and returns the number
 /// of observations written. Throws std::runtime_error naming the file when it cannot write.
+/// Most frames and cameras of an example rawlog (100000 frames of 4 cameras x 3 detections: ~350 MB).
+constexpr std::size_t kMaxExampleFrames = 100000;
+constexpr std::size_t kMaxExampleCameras = 64;
+
+/// \throw std::invalid_argument naming the field unless 1 <= frames <= kMaxExampleFrames,
+///        1 <= cameras <= kMaxExampleCameras, detections <= limits::kMaxDetectionsPerFrame.
+void validateExampleRawlogParams(const ExampleRawlogParams& params);
+
 std::size_t writeExampleRawlog(const std::string& path, const ExampleRawlogParams& params);
 
 }  // namespace simp::obs

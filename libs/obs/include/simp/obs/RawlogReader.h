@@ -6,6 +6,7 @@
 ///  - observations only: CObservationOdometry (absolute odometry) and CObservationObjects3D,
 ///    grouped into one frame per distinct timestamp.
 
+#include <mrpt/io/CStream.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/system/datetime.h>
 #include <simp/obs/CObservationObjects3D.h>
@@ -25,5 +26,9 @@ struct RawlogFrame {
 /// Reads the whole file. Throws std::runtime_error("rawlog 'FILE': entry N: ...") on a missing,
 /// truncated or corrupted file; other observation types are skipped.
 std::vector<RawlogFrame> readRawlog(const std::string& path);
+
+/// The same from a stream that delivers exactly `size_bytes` (uncompressed) bytes; `name` is
+/// the file name in messages (e.g. a memory buffer for tests and the fuzz target).
+std::vector<RawlogFrame> readRawlog(mrpt::io::CStream& in, std::uint64_t size_bytes, const std::string& name);
 
 }  // namespace simp::obs

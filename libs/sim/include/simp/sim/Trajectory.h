@@ -12,6 +12,8 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <cstddef>
+#include <string>
 #include <vector>
 
 namespace simp::sim {
@@ -74,6 +76,20 @@ std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Ei
 /// without it); the teleport is stored in `*kidnap_event`, and the robot plans from its new pose.
 /// \throw std::runtime_error when no goal is reachable (e.g. an empty map) or no pose for the
 /// kidnap qualifies; std::invalid_argument for a kidnap without kidnap_rng / kidnap_event.
+/// Longest simulated sequence, s (11.6 days): the `--duration` option and [sequence]
+/// duration_s are checked against it (1e300 once overflowed the step count, UB).
+constexpr double kMaxDuration_s = 1e6;
+/// Most poses of one trajectory (32 bytes each: at most 320 MB).
+constexpr std::size_t kMaxTrajectorySteps = 10'000'000;
+
+/// Throws std::invalid_argument naming `what` unless 0 < duration_s <= kMaxDuration_s.
+void checkDuration(double duration_s, const std::string& what);
+
+/// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
+/// poses). `obstacles` = walls and object footprints of the world the robot drives in.
+/// \throw std::runtime_error when no goal is reachable (e.g. an empty map);
+///        std::invalid_argument when duration_s > kMaxDuration_s or the poses would exceed
+///        kMaxTrajectorySteps.
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
                                                   double duration_s, Rng& rng, const KidnapParams& kidnap = {},

@@ -1,0 +1,123 @@
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/rtti/CObject.h>
+#include <simp/obs/BoundedArchive.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace simp::obs {
+
+BoundedArchive::BoundedArchive(mrpt::io::CStream& in, std::uint64_t size_bytes, std::string description)
+    : m_in(in), m_size(size_bytes), m_description(std::move(description)) {}
+
+size_t BoundedArchive::write(const void*, size_t) {
+    throw std::logic_error("BoundedArchive '" + m_description + "': is read only");
+}
+
+size_t BoundedArchive::read(void* buf, size_t len) {
+    auto* out = static_cast<std::uint8_t*>(buf);
+    size_t done = 0;
+    if (m_peek_pos < m_peeked.size()) {  // bytes a peek already fetched come first
+        done = std::min(len, m_peeked.size() - m_peek_pos);
+        std::memcpy(out, m_peeked.data() + m_peek_pos, done);
+        m_peek_pos += done;
+        if (m_peek_pos == m_peeked.size()) {
+            m_peeked.clear();
+            m_peek_pos = 0;
+        }
+    }
+    const auto n = static_cast<size_t>(std::min<std::uint64_t>(len - done, m_size - m_fetched));
+    if (n > 0) {
+        const size_t got = m_in.Read(out + done, n);
+        m_fetched += got;
+        done += got;
+    }
+    return done;  // 0 at the end: MRPT's ReadBuffer turns it into its end-of-file error
+}
+
+const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
+    if (m_peek_pos > 0) {
+        m_peeked.erase(m_peeked.begin(), m_peeked.begin() + static_cast<std::ptrdiff_t>(m_peek_pos));
+        m_peek_pos = 0;
+    }
+    while (m_peeked.size() < n && m_fetched < m_size) {
+        const auto want = static_cast<size_t>(std::min<std::uint64_t>(n - m_peeked.size(), m_size - m_fetched));
+        const auto old = m_peeked.size();
+        m_peeked.resize(old + want);
+        const size_t got = m_in.Read(m_peeked.data() + old, want);
+        m_peeked.resize(old + got);
+        m_fetched += got;
+        if (got == 0) break;
+    }
+    return m_peeked;
+}
+
+void BoundedArchive::guardCounts(const std::string& class_name, int version) {
+    // Offset of the u32 element count in the object's data (MRPT 2.5 serializeFrom).
+    std::size_t offset = 0;
+    if (class_name == "mrpt::obs::CActionCollection" && version == 0) offset = 0;
+    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 2) offset = 0;
+    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 1) offset = 4;  // + u32 ID
+    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 0) offset = 12;  // + ID, timestamp
+    else return;
+    const auto& bytes = peek(offset + 4);
+    if (bytes.size() < offset + 4) return;  // truncated: MRPT's reader reports the end of file
+    std::uint32_t n = 0;
+    std::memcpy(&n, bytes.data() + offset, 4);  // little endian, as MRPT writes on x86/arm
+    // Each element is an object: name length byte, >= 1 name byte, end flag.
+    constexpr std::uint64_t kMinObjectBytes = 3;
+    if (static_cast<std::uint64_t>(n) * kMinObjectBytes > bytesLeft() - (offset + 4))
+        throw std::invalid_argument(class_name + ": element count " + std::to_string(n) + " needs at least " +
+                                    std::to_string(n * kMinObjectBytes) + " bytes but only " +
+                                    std::to_string(bytesLeft()) + " remain in the file (corrupted or truncated)");
+}
+
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
+    std::string class_name;
+    bool old_format = false;
+    int8_t version = -1;
+    internal_ReadObjectHeader(class_name, old_format, version);
+    mrpt::serialization::CSerializable::Ptr obj;
+    if (class_name != "nullptr") {
+        const auto* id = mrpt::rtti::findRegisteredClass(class_name);
+        if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
+        guardCounts(id->className, static_cast<std::uint8_t>(version));
+        obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
+    }
+    internal_ReadObject(obj.get(), class_name, old_format, version);
+    return obj;
+}
+
+std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive) {
+    if (const auto* b = dynamic_cast<const BoundedArchive*>(&archive)) return b->bytesLeft();
+    return std::nullopt;
+}
+
+std::uint64_t uncompressedFileSize(const std::string& path) {
+    std::error_code ec;
+    const auto file_size = std::filesystem::file_size(path, ec);
+    if (ec) throw std::runtime_error("'" + path + "': cannot get the file size: " + ec.message());
+    unsigned char magic[2] = {0, 0};
+    {
+        std::ifstream f(path, std::ios::binary);
+        if (!f) throw std::runtime_error("'" + path + "': cannot open for reading");
+        f.read(reinterpret_cast<char*>(magic), 2);
+    }
+    if (!(magic[0] == 0x1f && magic[1] == 0x8b)) return file_size;  // not gzip
+    // gzip's own size field (ISIZE) is modulo 2^32 and per member: count the bytes instead.
+    mrpt::io::CFileGZInputStream gz;
+    if (!gz.open(path)) throw std::runtime_error("'" + path + "': cannot open for reading");
+    std::vector<unsigned char> chunk(1 << 16);
+    std::uint64_t total = 0;
+    for (;;) {
+        const size_t n = gz.Read(chunk.data(), chunk.size());
+        if (n == 0) break;
+        total += n;
+    }
+    return total;
+}
+
+}  // namespace simp::obs

@@ -1,0 +1,210 @@
+// Hostile rawlog bytes (issue #14): counts and lengths larger than the file, bool bytes other
+// than 0/1, absurd numbers. Every case must fail fast, without allocating what the file claims,
+// with a message naming the entry and the field.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/CArchive.h>
+#include <simp/obs/BoundedArchive.h>
+#include <simp/obs/CObservationObjects3D.h>
+#include <simp/obs/ExampleRawlog.h>
+#include <simp/obs/RawlogReader.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+
+using ::testing::HasSubstr;
+using simp::obs::CObservationObjects3D;
+using Bytes = std::vector<std::uint8_t>;
+
+namespace {
+
+Bytes bytesOf(const mrpt::serialization::CSerializable& o) {
+    mrpt::io::CMemoryStream buf;
+    auto a = mrpt::serialization::archiveFrom(buf);
+    a << o;
+    const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
+    return Bytes(p, p + buf.getTotalBytesCount());
+}
+
+/// A sensory frame holding one observation with one detection of confidence 0.3125
+/// (exact in float, found by its bytes) and a label "CAM_X".
+Bytes oneDetectionFrame(bool with_intrinsics = false) {
+    auto o = CObservationObjects3D::Create();
+    o->sensorLabel = "CAM_X";
+    if (with_intrinsics) {
+        mrpt::img::TCamera K;
+        K.setIntrinsicParamsFromValues(380, 380, 320, 240);
+        o->setIntrinsics(K);
+    }
+    simp::obs::Detection3D d;
+    d.class_id = 1;
+    d.confidence = 0.3125f;
+    d.box_in_camera.center = {0.5, 0.25, 3.0};
+    d.box_in_camera.size = {1.0, 0.75, 0.5};
+    o->addDetection(d);
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(o);
+    return bytesOf(sf);
+}
+
+std::size_t find(const Bytes& b, const void* needle, std::size_t n) {
+    const auto* p = static_cast<const std::uint8_t*>(needle);
+    const auto it = std::search(b.begin(), b.end(), p, p + n);
+    EXPECT_NE(it, b.end()) << "marker not found";
+    return static_cast<std::size_t>(it - b.begin());
+}
+
+template <typename T>
+void put(Bytes& b, std::size_t at, T v) {
+    std::memcpy(b.data() + at, &v, sizeof v);
+}
+
+/// Reads `b` as a rawlog from memory; returns the error message ("" when accepted).
+std::string readError(const Bytes& b) {
+    mrpt::io::CMemoryStream in;
+    in.assignMemoryNotOwn(b.data(), b.size());
+    try {
+        simp::obs::readRawlog(in, b.size(), "hostile.rawlog");
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+std::size_t confidenceAt(const Bytes& b) {
+    const float c = 0.3125f;
+    return find(b, &c, sizeof c);
+}
+
+}  // namespace
+
+TEST(HostileObservation, TheUnmodifiedFrameReads) { EXPECT_EQ(readError(oneDetectionFrame(true)), ""); }
+
+TEST(HostileObservation, HugeDetectionCountFailsFastWithoutAllocating) {
+    auto b = oneDetectionFrame();
+    // Detection count: the u32 before the class id (u16) that precedes the confidence.
+    const std::size_t count_at = confidenceAt(b) - 2 - 4;
+    put<std::uint32_t>(b, count_at, 9999);
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto err = readError(b);
+    EXPECT_THAT(err, HasSubstr("hostile.rawlog"));
+    EXPECT_THAT(err, HasSubstr("detection count"));
+    EXPECT_THAT(err, HasSubstr("remain in the file"));
+    put<std::uint32_t>(b, count_at, 1u << 31);
+    EXPECT_THAT(readError(b), HasSubstr("count 2147483648 exceeds the maximum"));
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2));
+}
+
+TEST(HostileObservation, HugeLabelLengthIsRejected) {
+    auto b = oneDetectionFrame();
+    const std::size_t len_at = find(b, "CAM_X", 5) - 4;
+    put<std::uint32_t>(b, len_at, 0xFFFFFFF0u);
+    const auto err = readError(b);
+    EXPECT_THAT(err, HasSubstr("sensorLabel"));
+    EXPECT_THAT(err, HasSubstr("string length 4294967280"));
+    put<std::uint32_t>(b, len_at, 1000);  // under the maximum, more than the file holds
+    EXPECT_THAT(readError(b), HasSubstr("remain in the file"));
+}
+
+TEST(HostileObservation, HugeClassListIsRejected) {
+    auto b = oneDetectionFrame();
+    // The default class list starts with "sink": u32 count, u32 length 4, "sink".
+    const std::size_t count_at = find(b, "sink", 4) - 8;
+    put<std::uint32_t>(b, count_at, 0x7FFFFFFFu);
+    EXPECT_THAT(readError(b), HasSubstr("class_names': count 2147483647 exceeds the maximum"));
+    put<std::uint32_t>(b, count_at, 900);
+    EXPECT_THAT(readError(b), HasSubstr("class_names"));
+}
+
+TEST(HostileObservation, BoolBytesMustBeZeroOrOne) {
+    auto b = oneDetectionFrame();
+    // Per detection (v1): after the quaternion (4 doubles) come has_box_2d and has_detector_id.
+    const std::size_t has_2d_at = confidenceAt(b) + 4 + 10 * 8;
+    ASSERT_LE(b[has_2d_at], 1);
+    b[has_2d_at] = 7;
+    auto err = readError(b);
+    EXPECT_THAT(err, HasSubstr("detection #0: field 'has_box_2d': bool byte = 7"));
+    b[has_2d_at] = 0;
+    b[has_2d_at + 1] = 2;
+    EXPECT_THAT(readError(b), HasSubstr("has_detector_id"));
+    // has_intrinsics: the byte after the image size, 4 + 4 + 1 + 4 bytes before the class id.
+    auto c = oneDetectionFrame();
+    const std::size_t has_k_at = confidenceAt(c) - 2 - 4 - 1;
+    ASSERT_EQ(c[has_k_at], 0);
+    c[has_k_at] = 0x80;
+    EXPECT_THAT(readError(c), HasSubstr("has_intrinsics"));
+}
+
+TEST(HostileObservation, CameraNameLengthAndDistortionByteAreChecked) {
+    auto b = oneDetectionFrame(true);
+    const std::size_t name_at = find(b, "camera1", 7);  // TCamera's default cameraName
+    put<std::uint32_t>(b, name_at - 4, 0xFFFFFF00u);
+    EXPECT_THAT(readError(b), HasSubstr("intrinsics', cameraName: string length"));
+    auto c = oneDetectionFrame(true);
+    c[name_at + 7] = 9;  // the distortion model byte (TCamera v6)
+    EXPECT_THAT(readError(c), HasSubstr("distortion model byte = 9"));
+}
+
+TEST(HostileObservation, AbsurdNumbersAreRejected) {
+    auto b = oneDetectionFrame();
+    const std::size_t conf_at = confidenceAt(b);
+    put<float>(b, conf_at, 7.0f);
+    EXPECT_THAT(readError(b), HasSubstr("field 'confidence' = 7"));
+    b = oneDetectionFrame();
+    put<double>(b, conf_at + 4, 1e300);  // centre x
+    EXPECT_THAT(readError(b), HasSubstr("field 'center'"));
+    b = oneDetectionFrame();
+    put<double>(b, conf_at + 4 + 3 * 8, 1e6);  // size W
+    EXPECT_THAT(readError(b), HasSubstr("maximum box side"));
+    b = oneDetectionFrame();
+    put<double>(b, conf_at + 4 + 3 * 8, std::nan(""));
+    EXPECT_THAT(readError(b), HasSubstr("field 'size'"));
+}
+
+TEST(HostileObservation, MrptContainerCountsAreGuarded) {
+    // CSensoryFrame v2: the u32 observation count follows the object header.
+    auto b = oneDetectionFrame();
+    const std::size_t header = 1 + std::strlen("mrpt::obs::CSensoryFrame") + 1;
+    put<std::uint32_t>(b, header, 0xFFFFFFFFu);
+    EXPECT_THAT(readError(b), HasSubstr("CSensoryFrame: element count 4294967295"));
+    mrpt::obs::CActionCollection acts;
+    auto a = bytesOf(acts);
+    const std::size_t aheader = 1 + std::strlen("mrpt::obs::CActionCollection") + 1;
+    put<std::uint32_t>(a, aheader, 0x40000000u);
+    EXPECT_THAT(readError(a), HasSubstr("CActionCollection: element count 1073741824"));
+}
+
+TEST(HostileObservation, PlainArchivesStillHaveTheFixedMaxima) {
+    // Without a BoundedArchive (MRPT's tools through the plugin) the documented maxima hold.
+    auto b = oneDetectionFrame();
+    put<std::uint32_t>(b, confidenceAt(b) - 6, 1u << 31);
+    mrpt::io::CMemoryStream in;
+    in.assignMemoryNotOwn(b.data(), b.size());
+    auto a = mrpt::serialization::archiveFrom(in);
+    try {
+        a.ReadObject();
+        FAIL() << "accepted";
+    } catch (const std::exception& e) {
+        EXPECT_THAT(e.what(), HasSubstr("exceeds the maximum"));
+    }
+}
+
+TEST(ExampleRawlogHostile, ParametersAreBounded) {
+    simp::obs::ExampleRawlogParams p;
+    p.frames = 0;  // a rawlog the project's reader rejects
+    EXPECT_THROW(simp::obs::validateExampleRawlogParams(p), std::invalid_argument);
+    p.frames = static_cast<std::size_t>(-1);  // --frames -1 through stoul
+    EXPECT_THROW(simp::obs::validateExampleRawlogParams(p), std::invalid_argument);
+    p.frames = 1;
+    p.detections = static_cast<std::size_t>(-3);
+    try {
+        simp::obs::validateExampleRawlogParams(p);
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_THAT(e.what(), HasSubstr("detections"));
+    }
+}
