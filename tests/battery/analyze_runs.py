@@ -42,8 +42,8 @@ def main():
     rows = list(csv.reader(open(sys.argv[1]), delimiter='\t'))
     evalbin = os.environ.get('SIMP_EVAL', 'build/bin/simp-eval')
     groups = defaultdict(list)
-    loc_total = loc_ok = 0
-    kid = []
+    loc = defaultdict(lambda: [0, 0])   # group -> [localized steps, within the bounds]
+    kid = defaultdict(list)             # config -> [(lost_s, relocalized_s)]
     for run, seq, group in rows:
         gt = read_tum(os.path.join(seq, 'groundtruth.tum'))
         r = subprocess.run([evalbin, 'traj', '--gt', os.path.join(seq, 'groundtruth.tum'), '--est',
@@ -62,8 +62,8 @@ def main():
             if e is None: continue
             within = e[0] <= 0.3 and e[1] <= math.pi / 4
             if s['state'] == 'localized':
-                loc_total += 1
-                loc_ok += within
+                loc[group][0] += 1
+                loc[group][1] += within
             if kidnap_t is not None and t >= kidnap_t:
                 if lost_at is None and s['state'] in ('lost', 'global'):
                     lost_at = t - kidnap_t
@@ -75,27 +75,29 @@ def main():
         m['run'] = run
         groups[group].append(m)
         if kidnap_t is not None:
-            kid.append((lost_at, reloc_at))
+            kid[group.split('/')[0]].append((lost_at, reloc_at))
     out = {}
-    print('| group | runs | success | ATE m | ATE rad | median conv s |')
-    print('|---|---:|---:|---:|---:|---:|')
+    print('| group | runs | success | ATE m | ATE rad | median conv s | localized steps within bounds |')
+    print('|---|---:|---:|---:|---:|---:|---:|')
     for g, ms in sorted(groups.items()):
         ok = [m for m in ms if m.get('success')]
         ate_t = sum(m['ate_trans_m'] for m in ok) / len(ok) if ok else float('nan')
         ate_r = sum(m['ate_rot_rad'] for m in ok) / len(ok) if ok else float('nan')
         conv = sorted(m['convergence_time_s'] for m in ms if m.get('converged'))
         med = conv[len(conv) // 2] if conv else float('nan')
-        print(f'| {g} | {len(ms)} | {len(ok)}/{len(ms)} ({100*len(ok)/len(ms):.0f} %) | {ate_t:.3f} | {ate_r:.3f} | {med:.1f} |')
+        lt, lk = loc[g]
+        print(f'| {g} | {len(ms)} | {len(ok)}/{len(ms)} ({100*len(ok)/len(ms):.0f} %) | {ate_t:.3f} | {ate_r:.3f} | {med:.1f} | {lk}/{lt} ({100.0*lk/max(1,lt):.1f} %) |')
         out[g] = {'runs': len(ms), 'success': len(ok), 'ate_trans_m': ate_t, 'ate_rot_rad': ate_r, 'median_convergence_s': med}
-    print(f'\nlocalized steps within 0.3 m / pi/4: {loc_ok}/{loc_total} = {100.0*loc_ok/max(1,loc_total):.2f} %')
-    if kid:
-        lost5 = sum(1 for l, r in kid if l is not None and l <= 5)
-        rel20 = sum(1 for l, r in kid if l is not None and l <= 5 and r is not None and r <= 20)
-        print(f'kidnap: lost within 5 s {lost5}/{len(kid)}, lost within 5 s and localized again within 20 s {rel20}/{len(kid)}')
+    print()
+    for cfg, ks in sorted(kid.items()):
+        lost5 = sum(1 for l, r in ks if l is not None and l <= 5)
+        rel20 = sum(1 for l, r in ks if l is not None and l <= 5 and r is not None and r <= 20)
+        print(f'kidnap {cfg}: lost within 5 s {lost5}/{len(ks)}, and localized again (within bounds) within 20 s {rel20}/{len(ks)}')
     fails = [m['run'] for ms in groups.values() for m in ms if not m.get('success')]
     if fails:
         print('failed runs: ' + ' '.join(fails))
     if '--json' in sys.argv:
         print(json.dumps(out))
 
-main()
+if __name__ == "__main__":
+    main()

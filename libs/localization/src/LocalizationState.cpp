@@ -27,15 +27,19 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
     while (!m_items.empty() && t_now_s - m_items.front().t_s > m_params.fit_max_age_s) m_items.pop_front();
     const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
     Fit fit;
-    std::size_t explained = 0;
-    for (const auto& it : m_items) {
-        const mrpt::poses::CPose2D world_T_frame = estimate + (it.odometry_pose - odometry_now);
-        const auto log_p = map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
+    std::size_t explained = 0, recent_explained = 0;
+    for (auto it = m_items.rbegin(); it != m_items.rend(); ++it) {  // newest first
+        const mrpt::poses::CPose2D world_T_frame = estimate + (it->odometry_pose - odometry_now);
+        const auto log_p = map.detectionLogLikelihood(*it->obs, it->k, world_T_frame.asTPose());
         if (!log_p) continue;
+        const bool ok = *log_p >= log_explained;
         ++fit.scored;
-        if (*log_p >= log_explained) ++explained;
+        explained += ok;
+        if (fit.recent_scored < m_params.lost_window) ++fit.recent_scored, recent_explained += ok;
     }
     if (fit.scored > 0) fit.fraction = static_cast<double>(explained) / static_cast<double>(fit.scored);
+    if (fit.recent_scored > 0)
+        fit.recent_fraction = static_cast<double>(recent_explained) / static_cast<double>(fit.recent_scored);
     return fit;
 }
 
@@ -43,7 +47,8 @@ LocalizationState StateMonitor::update(double cluster_weight, double cluster_std
                                        bool had_detections) {
     const bool fit_known = fit.scored >= m_params.fit_min_detections;
     if (m_state == LocalizationState::Localized) {
-        if ((fit_known && fit.fraction <= m_params.lost_max_fit) || cluster_weight < m_params.lost_min_weight) {
+        const bool recent_known = fit.recent_scored >= m_params.lost_window;
+        if ((recent_known && fit.recent_fraction <= m_params.lost_max_fit) || cluster_weight < m_params.lost_min_weight) {
             m_state = LocalizationState::Lost;
             m_good_updates = 0;
         }

@@ -170,6 +170,8 @@ void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string
     p.localized_min_weight = readFraction(cfg, s, "localized_min_weight", p.localized_min_weight);
     p.localized_max_std_m = readPositive(cfg, s, "localized_max_std_m", p.localized_max_std_m, false);
     p.localized_min_updates = readCount(cfg, s, "localized_min_updates", p.localized_min_updates);
+    p.lost_window = readCount(cfg, s, "lost_window", p.lost_window);
+    if (p.lost_window > p.fit_window) throw std::invalid_argument(where(s, "lost_window") + " must be <= fit_window");
     p.lost_max_fit = readFraction(cfg, s, "lost_max_fit", p.lost_max_fit);
     p.lost_min_weight = readFraction(cfg, s, "lost_min_weight", p.lost_min_weight);
     if (p.lost_max_fit >= p.localized_min_fit)
@@ -256,7 +258,7 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
                    file);
     checkKnownKeys(cfg, "State",
                    {"fit_window", "fit_max_age_s", "fit_min_detections", "explained_ratio", "localized_min_fit",
-                    "localized_min_weight", "localized_max_std_m", "localized_min_updates", "lost_max_fit",
+                    "localized_min_weight", "localized_max_std_m", "localized_min_updates", "lost_window", "lost_max_fit",
                     "lost_min_weight"},
                    file);
     checkKnownKeys(cfg, "DetectionNovelty", {"decorrelation_distance_m", "min_weight", "track_radius_m", "track_timeout_s"},

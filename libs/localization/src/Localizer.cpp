@@ -201,9 +201,13 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     const auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
     rec.fit = fit.fraction;
     rec.fit_detections = fit.scored;
-    if (trigger)
+    if (trigger) {
+        const auto before = m_monitor.state();
         m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
                          rec.detections > 0);
+        // The detections of the lost hypothesis say nothing about the next one.
+        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost) m_fit.clear();
+    }
     rec.state = m_monitor.state();
     return rec;
 }

@@ -28,13 +28,14 @@ std::string toString(LocalizationState s);
 struct StateParams {
     std::size_t fit_window = 12;           ///< detections kept for the fit (the last ones)
     double fit_max_age_s = 15.0;           ///< ... and not older than this (s)
-    std::size_t fit_min_detections = 6;    ///< fewer in the window: the fit says nothing
+    std::size_t fit_min_detections = 5;    ///< fewer in the window: the fit says nothing
     double explained_ratio = 2.0;          ///< explained: p(z|m,x) >= this x eta
     double localized_min_fit = 0.5;        ///< localized needs at least this fit ...
-    double localized_min_weight = 0.8;     ///< ... this cluster weight fraction ...
+    double localized_min_weight = 0.7;     ///< ... this cluster weight fraction ...
     double localized_max_std_m = 0.3;      ///< ... a cluster position spread (sqrt of trace) under this (m) ...
     std::size_t localized_min_updates = 3; ///< ... over this many consecutive updates with detections
-    double lost_max_fit = 0.25;            ///< localized -> lost when the fit falls to this ...
+    std::size_t lost_window = 4;           ///< the lost test looks at this many last detections ...
+    double lost_max_fit = 0.0;             ///< localized -> lost when their fit falls to this ...
     double lost_min_weight = 0.3;          ///< ... or the cluster weight under this
 };
 
@@ -47,8 +48,10 @@ class FitWindow {
     void add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
              const mrpt::poses::CPose2D& odometry_pose, double t_s);
     struct Fit {
-        double fraction = 0;      ///< explained / scored, in [0, 1]
-        std::size_t scored = 0;   ///< detections in the window
+        double fraction = 0;        ///< explained / scored, in [0, 1]
+        std::size_t scored = 0;     ///< detections in the window
+        double recent_fraction = 0; ///< the same over the last lost_window of them
+        std::size_t recent_scored = 0;
     };
     /// Scores the window with the robot at `estimate` (world) now, at odometry pose `odometry_now`:
     /// each detection at estimate (+) (odometry_now^-1 (+) its odometry pose).

@@ -1,0 +1,232 @@
+/// The online localizer and its parts: state transitions, tempering of repeated detections,
+/// detection-driven injection, pruning without teleported weight, KLD count, and a kidnapped robot
+/// end to end on the synthetic scenario.
+
+#include "SyntheticScenario.h"
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <simp/localization/DetectionNovelty.h>
+#include <simp/localization/DetectionPoseSampler.h>
+#include <simp/localization/LocalizationState.h>
+#include <simp/localization/Localizer.h>
+#include <simp/localization/RawlogSequence.h>
+#include <simp/obs/ObjectClasses.h>
+
+#include <cmath>
+
+using namespace simp::localization;
+using namespace simp::localization::test;
+
+namespace {
+
+/// A camera observation of map objects `idx` of `w` seen from `robot` (exact boxes).
+simp::obs::CObservationObjects3D::Ptr observe(const simp::world::World& w, const mrpt::math::TPose2D& robot,
+                                              const std::vector<int>& idx) {
+    auto o = simp::obs::CObservationObjects3D::Create();
+    const auto cam = simp::obs::cameraPoseOnRobot(0.1, 0, 0.5, 0.0);
+    o->setCameraPose(cam);
+    o->setClassNames(simp::obs::defaultClassNames());
+    const mrpt::poses::CPose3D world_T_cam = mrpt::poses::CPose3D(mrpt::poses::CPose2D(robot)) + cam;
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.matrix() = world_T_cam.getHomogeneousMatrixVal<mrpt::math::CMatrixDouble44>().asEigen();
+    for (int i : idx) {
+        simp::obs::Detection3D d;
+        d.class_id = static_cast<std::uint16_t>(w.objects.objects[static_cast<std::size_t>(i)].class_id);
+        d.confidence = 0.95f;
+        d.box_in_camera = w.objects.objects[static_cast<std::size_t>(i)].box.transformed(T.inverse());
+        o->addDetection(d);
+    }
+    return o;
+}
+
+std::shared_ptr<simp::maps::CObjectMap> makeMap(const simp::world::World& w) {
+    auto map = std::make_shared<simp::maps::CObjectMap>();
+    map->setData(w.objects);
+    return map;
+}
+
+}  // namespace
+
+TEST(StateMonitor, GlobalToLocalizedToLostToLocalized) {
+    StateParams p;
+    StateMonitor m(p);
+    EXPECT_EQ(m.state(), LocalizationState::Global);
+    const FitWindow::Fit good{0.8, 10, 1.0, 4}, bad{0.0, 10, 0.0, 4}, unknown{1.0, 2, 1.0, 2};
+    // Concentrated and explaining, but only after localized_min_updates such updates.
+    for (std::size_t i = 1; i < p.localized_min_updates; ++i)
+        EXPECT_EQ(m.update(0.95, 0.1, good, true), LocalizationState::Global);
+    EXPECT_EQ(m.update(0.95, 0.1, good, true), LocalizationState::Localized);
+    // Too few detections to judge: no change; the last detections unexplained: lost.
+    EXPECT_EQ(m.update(0.95, 0.1, unknown, true), LocalizationState::Localized);
+    EXPECT_EQ(m.update(0.95, 0.1, bad, true), LocalizationState::Lost);
+    // A split set is lost too.
+    m.reset(LocalizationState::Localized);
+    EXPECT_EQ(m.update(p.lost_min_weight / 2, 0.1, good, true), LocalizationState::Lost);
+    // Back: the same test as from global; a spread-out or unexplaining set does not qualify.
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(m.update(0.95, 1.0, good, true), LocalizationState::Lost);
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(m.update(0.95, 0.1, bad, true), LocalizationState::Lost);
+    for (std::size_t i = 0; i < p.localized_min_updates; ++i) m.update(0.95, 0.1, good, true);
+    EXPECT_EQ(m.state(), LocalizationState::Localized);
+}
+
+TEST(FitWindow, ExplainsDetectionsAtTheRightPoseOnly) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    FitWindow fit;
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    // Two frames, the robot moved 0.5 m between them (odometry frame = world frame shifted).
+    const mrpt::poses::CPose2D odo0(10, 10, 0), odo1 = odo0 + mrpt::poses::CPose2D(0.5, 0, 0);
+    const mrpt::math::TPose2D robot1 = (mrpt::poses::CPose2D(robot) + mrpt::poses::CPose2D(0.5, 0, 0)).asTPose();
+    fit.add(*map, observe(w, robot, {0, 1, 2}), odo0, 0.0);
+    fit.add(*map, observe(w, robot1, {3, 4}), odo1, 1.0);
+    const auto right = fit.evaluate(*map, mrpt::poses::CPose2D(robot1), odo1, 1.0);
+    EXPECT_EQ(right.scored, 5u);
+    EXPECT_DOUBLE_EQ(right.fraction, 1.0);
+    const auto wrong = fit.evaluate(*map, mrpt::poses::CPose2D(robot1) + mrpt::poses::CPose2D(3.0, 2.0, 1.0), odo1, 1.0);
+    EXPECT_LT(wrong.fraction, 0.5);
+}
+
+TEST(DetectionNovelty, RepeatsFromOnePlaceWeighLittleNewViewpointsFully) {
+    const auto w = makeWorld();
+    DetectionNoveltyParams p;
+    DetectionNovelty n(p);
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo(0, 0, 0);
+    EXPECT_EQ(n.weigh(*observe(w, robot, {0}), odo, 0.0), std::vector<double>{1.0});  // first sight
+    EXPECT_EQ(n.weigh(*observe(w, robot, {0}), odo, 0.2), std::vector<double>{p.min_weight});  // same place
+    // Half the decorrelation distance later: half a detection; a whole one: a full detection.
+    const auto half = mrpt::poses::CPose2D(0.5 * p.decorrelation_distance_m, 0, 0);
+    const mrpt::math::TPose2D robot_half = (mrpt::poses::CPose2D(robot) + half).asTPose();
+    EXPECT_NEAR(n.weigh(*observe(w, robot_half, {0}), odo + half, 0.4)[0], 0.5, 1e-9);
+    const auto far = half + mrpt::poses::CPose2D(p.decorrelation_distance_m, 0, 0);
+    const mrpt::math::TPose2D robot_far = (mrpt::poses::CPose2D(robot) + far).asTPose();
+    EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6)[0], 1.0);
+    // Forgotten after the timeout; off when the distance is 0.
+    EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6 + p.track_timeout_s + 1)[0], 1.0);
+    DetectionNovelty off(DetectionNoveltyParams{0.0, 0.1, 1.0, 20.0});
+    off.weigh(*observe(w, robot, {0}), odo, 0.0);
+    EXPECT_EQ(off.weigh(*observe(w, robot, {0}), odo, 0.1)[0], 1.0);
+}
+
+TEST(DetectionPoseSampler, DrawsPosesThatPutTheDetectionOnAnObjectOfItsClass) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const FreeSpace free_space(w.floorplan, 0.7);
+    DetectionPoseSamplerParams p;
+    p.position_std_m = 0.0;
+    p.heading_std_rad = 0.0;
+    const DetectionPoseSampler sampler(*map, free_space, p);
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    auto& rng = mrpt::random::getRandomGenerator();
+    rng.randomize(5);
+    const auto poses = sampler.sample({{observe(w, robot, {0}), {}}}, 200, rng);
+    ASSERT_GT(poses.size(), 20u);
+    // Every pose explains the detection (its centre on an object of the class), and the true pose is
+    // among them (the object's own box, exact detection).
+    const auto obs = observe(w, robot, {0});
+    std::size_t near_truth = 0;
+    for (const auto& x : poses) {
+        EXPECT_TRUE(free_space.isFree(x.x, x.y));
+        const auto log_p = map->detectionLogLikelihood(*obs, 0, x);
+        ASSERT_TRUE(log_p.has_value());
+        EXPECT_GT(*log_p, std::log(2 * map->likelihoodOptions.eta)) << x.x << " " << x.y << " " << x.phi;
+        near_truth += std::hypot(x.x - robot.x, x.y - robot.y) < 0.2 &&
+                      std::abs(mrpt::math::wrapToPi(x.phi - robot.phi)) < 0.1;
+    }
+    EXPECT_GT(near_truth, 0u);
+}
+
+TEST(ObjectMcl, PruningNeverTeleportsWeight) {
+    // A tracked set (all weight near one pose) whose odometry pushes part of it into a wall: the
+    // pruned particles are redrawn with the smallest weight, so the weight stays where it was.
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    auto free_space = std::make_shared<FreeSpace>(w.floorplan, 0.7);
+    ObjectMcl mcl(map);
+    mcl.setFreeSpace(free_space);
+    mcl.prune_keeps_weight = false;
+    mrpt::random::getRandomGenerator().randomize(3);
+    mcl.resetAround({0.3, 4.5, M_PI}, 0.2, 0.05, 1000);  // next to the left outer wall (x = 0)
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
+    mrpt::obs::CActionRobotMovement2D mv;
+    auto mm = mrpt::obs::CActionRobotMovement2D::TMotionModelOptions();
+    mm.gaussianModel = {0.0, 0.0, 0.0, 0.0, 0.001, 0.001};
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.25, 0, 0), mm);  // towards the wall
+    mrpt::obs::CActionCollection acts;
+    acts.insert(mv);
+    mcl.predict(&acts, pf);
+    ASSERT_GT(mcl.lastPrunedCount(), 100u);
+    double in_cluster = 0, total = 0;
+    for (const auto& p : mcl.m_particles) {
+        const double wgt = std::exp(p.log_w);
+        total += wgt;
+        if (std::hypot(p.d.x - 0.05, p.d.y - 4.5) < 1.0) in_cluster += wgt;
+    }
+    EXPECT_GT(in_cluster / total, 0.999);
+}
+
+TEST(Localizer, KldCountShrinksWithTheSet) {
+    mrpt::slam::TKLDParams kld;
+    kld.KLD_minSampleSize = 100;
+    kld.KLD_maxSampleSize = 100000;
+    mrpt::poses::CPosePDFParticles tight(2000), wide(2000);
+    auto& rng = mrpt::random::getRandomGenerator();
+    rng.randomize(1);
+    for (auto& p : tight.m_particles) p.d = {rng.drawGaussian1D(0, 0.05), rng.drawGaussian1D(0, 0.05), rng.drawGaussian1D(0, 0.02)};
+    for (auto& p : wide.m_particles) p.d = {rng.drawUniform(0.0, 20.0), rng.drawUniform(0.0, 10.0), rng.drawUniform(-M_PI, M_PI)};
+    const auto n_tight = kldParticleCount(tight, kld), n_wide = kldParticleCount(wide, kld);
+    // Fox's bound with MRPT's defaults (0.2 m, 5 deg bins, epsilon 0.02, delta 0.01): a cloud of
+    // 5 cm and 1 deg occupies about 20 bins (a few hundred particles), 2000 particles spread over
+    // 20 m x 10 m x 2 pi occupy about 2000 (tens of thousands).
+    EXPECT_GT(n_tight, kld.KLD_minSampleSize);
+    EXPECT_LT(n_tight, 1000u);
+    EXPECT_GT(n_wide, 20 * n_tight);
+    kld.KLD_maxSampleSize = 3000;
+    EXPECT_EQ(kldParticleCount(wide, kld), 3000u);
+}
+
+TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
+    // The synthetic scenario's frames up to t = 20 s, then (without an odometry jump) the frames from
+    // t = 30 s on: the robot was carried about the distance it drives in 10 s.
+    const Scenario& sc = sharedScenario();
+    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
+    LocalizerOptions opts;
+    opts.experiment.particles_count = 2000;
+    opts.experiment.prune_keeps_weight = false;
+    auto map = makeMap(sc.world);
+    mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
+    Localizer loc(map, sc.world.floorplan, opts);
+    loc.startGlobal();
+    const double t0 = seq.frames.front().t_s;
+    std::size_t cut = 0, resume = 0;
+    while (seq.frames[cut].t_s - t0 < 20.0) ++cut;
+    resume = cut;
+    while (seq.frames[resume].t_s - t0 < 30.0) ++resume;
+    const double jump = translationError(sc.groundtruth[cut].pose, sc.groundtruth[resume].pose);
+    ASSERT_GT(jump, 1.0);
+    StepRecord rec;
+    for (std::size_t f = 0; f < cut; ++f) rec = loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
+    ASSERT_EQ(rec.state, LocalizationState::Localized);
+    ASSERT_LT(translationError(rec.estimate, sc.groundtruth[cut - 1].pose), 0.3);
+    double lost_after = -1, localized_after = -1;
+    for (std::size_t f = resume; f < seq.frames.size(); ++f) {
+        const double t = seq.frames[f].t_s - seq.frames[resume].t_s;
+        rec = loc.step(seq.frames[f].t_s, f == resume ? mrpt::poses::CPose2D() : seq.frames[f].odometry_increment,
+                       *seq.frames[f].observations);
+        if (lost_after < 0 && rec.state != LocalizationState::Localized) lost_after = t;
+        if (lost_after >= 0 && localized_after < 0 && rec.state == LocalizationState::Localized) {
+            localized_after = t;
+            EXPECT_LT(translationError(rec.estimate, sc.groundtruth[f].pose), 0.3);
+            EXPECT_LT(headingError(rec.estimate, sc.groundtruth[f].pose), M_PI / 4);
+        }
+    }
+    EXPECT_GE(lost_after, 0.0) << "never lost";
+    EXPECT_LE(lost_after, 5.0);
+    EXPECT_GE(localized_after, 0.0) << "never localized again";
+    EXPECT_LE(localized_after, 20.0);
+}
