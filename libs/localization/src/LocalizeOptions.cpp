@@ -210,6 +210,13 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paper
     return o;
 }
 
+mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::defaults() {
+    auto o = paperDefaults();
+    o.gaussianModel.a1 = 0.05;  // m / m
+    o.gaussianModel.a4 = 0.05;  // rad / rad
+    return o;
+}
+
 void MotionModelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
     using M = mrpt::obs::CActionRobotMovement2D;
     auto& o = mrpt_options;

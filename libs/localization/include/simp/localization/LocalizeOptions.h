@@ -59,9 +59,12 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
 /// Defaults: the paper's sigma_odom = (0.15 m, 0.15 m, 0.15 rad) as the authors' code applies it,
 /// i.e. proportional to the motion (doc/localization.md, "Motion model").
 struct MotionModelOptions : public mrpt::config::CLoadableOptions {
-    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mrpt_options = paperDefaults();
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions mrpt_options = defaults();
 
+    /// The paper's sigma_odom = 0.15 per m / per rad (config_ini/simp-paper.ini).
     static mrpt::obs::CActionRobotMovement2D::TMotionModelOptions paperDefaults();
+    /// config_ini/simp.ini's: 0.05 per m / per rad (doc/localization.md "Robust tracking").
+    static mrpt::obs::CActionRobotMovement2D::TMotionModelOptions defaults();
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
 };
