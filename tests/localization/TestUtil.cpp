@@ -34,6 +34,12 @@ void runApp(LocalizeApp& app, const std::vector<std::string>& args) {
     app.run();
 }
 
+std::shared_ptr<simp::maps::CObjectMap> makeMap(const simp::world::World& w) {
+    auto map = std::make_shared<simp::maps::CObjectMap>();
+    map->setData(w.objects);
+    return map;
+}
+
 double translationError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt) {
     return std::hypot(est.x - gt.x, est.y - gt.y);
 }

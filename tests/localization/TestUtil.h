@@ -6,7 +6,10 @@
 #include "SyntheticScenario.h"
 
 #include <simp/localization/LocalizeApp.h>
+#include <simp/maps/CObjectMap.h>
+#include <simp/world/World.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,6 +25,8 @@ std::string freshOutputDir(const std::string& name);
 void runApp(LocalizeApp& app, const std::vector<std::string>& args);
 
 /// Pose error of `est` w.r.t. `gt`: translation (m) and absolute heading difference (rad).
+/// An object map holding the objects of `w` (default options).
+std::shared_ptr<simp::maps::CObjectMap> makeMap(const simp::world::World& w);
 double translationError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt);
 double headingError(const mrpt::math::TPose2D& est, const mrpt::math::TPose2D& gt);
 

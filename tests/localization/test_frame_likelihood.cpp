@@ -2,6 +2,7 @@
 /// MRPT's per-particle path.
 
 #include "SyntheticScenario.h"
+#include "TestUtil.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/bayes/CParticleFilter.h>
@@ -16,6 +17,7 @@
 #include <cmath>
 
 using namespace simp::localization;
+using namespace simp::localization::test;
 
 namespace {
 
@@ -41,12 +43,6 @@ mrpt::obs::CSensoryFrame makeFrame(const simp::world::World& w, const mrpt::math
         sf.insert(o);
     }
     return sf;
-}
-
-std::shared_ptr<simp::maps::CObjectMap> makeMap(const simp::world::World& w) {
-    auto map = std::make_shared<simp::maps::CObjectMap>();
-    map->setData(w.objects);
-    return map;
 }
 
 }  // namespace

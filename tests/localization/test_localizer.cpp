@@ -44,12 +44,6 @@ simp::obs::CObservationObjects3D::Ptr observe(const simp::world::World& w, const
     return o;
 }
 
-std::shared_ptr<simp::maps::CObjectMap> makeMap(const simp::world::World& w) {
-    auto map = std::make_shared<simp::maps::CObjectMap>();
-    map->setData(w.objects);
-    return map;
-}
-
 }  // namespace
 
 TEST(StateMonitor, GlobalToLocalizedToLostToLocalized) {

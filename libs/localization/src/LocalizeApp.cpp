@@ -4,10 +4,7 @@
 #include <mrpt/io/vector_loadsave.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
-#include <mrpt/obs/CActionCollection.h>
-#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <simp/localization/FreeSpace.h>
 #include <simp/localization/RawlogSequence.h>
 #include <simp/localization/TrajectoryImage.h>
 #include <simp/maps/CObjectMap.h>
@@ -298,17 +295,11 @@ std::array<double, 5> parseInitialPose(const std::string& text) {
         const auto comma = text.find(',', pos);
         const std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
         if (count >= 5) throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': more than 5 numbers");
-        std::size_t used = 0;
-        double x = 0;
-        try {
-            x = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || item.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(x))
+        const auto x = parseFiniteNumber(item);
+        if (!x)
             throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': '" + item +
                                         "' is not a finite number (expected x,y,phi[,sigma_xy,sigma_phi])");
-        v[count++] = x;
+        v[count++] = *x;
         if (comma == std::string::npos) break;
         pos = comma + 1;
     }

@@ -22,16 +22,9 @@ double readNumber(const mrpt::config::CConfigFileBase& cfg, const std::string& s
                   double def) {
     if (!cfg.keyExists(section, key)) return def;
     const std::string text = cfg.read_string(section, key, "");
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(v))
-        throw std::invalid_argument(where(section, key) + " = '" + text + "' is not a finite number");
-    return v;
+    const auto v = parseFiniteNumber(text);
+    if (!v) throw std::invalid_argument(where(section, key) + " = '" + text + "' is not a finite number");
+    return *v;
 }
 
 double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
@@ -58,6 +51,18 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 }  // namespace
+
+std::optional<double> parseFiniteNumber(const std::string& text) {
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
 
 const std::vector<std::string>& sensorModelNames() {
     static const std::vector<std::string> names{"simp", "edt", "d", "o"};

@@ -144,12 +144,12 @@ void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<Wei
         // CParticleFilter::executeOn's steps, with sensor resetting before the weights and the
         // particle count chosen at resampling.
         m_mcl->predict(acts ? &*acts : nullptr, pf);
-        const std::size_t injected = injectFromDetections(observations);
+        injectFromDetections(observations);
         m_mcl->weigh(observations, pf.powFactor);
         m_mcl->normalizeWeights();
         const double ess = m_mcl->ESS();
         rec.ess = ess * static_cast<double>(m_mcl->size());
-        rec.injected = m_mcl->lastInjectedCount() + injected;
+        rec.injected = m_mcl->lastInjectedCount();  // recovery and sensor resetting (inject() counts itself)
         if (!pf.adaptiveSampleSize) {
             const std::size_t target = particleTarget();
             if (target != m_mcl->size())

@@ -8,6 +8,7 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,10 @@ void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::st
 
 /// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);
+
+/// The whole of `text` as a finite number (blanks after it allowed), or nullopt: the one strict number
+/// parser of the .ini keys and the command line of simp-localize.
+std::optional<double> parseFiniteNumber(const std::string& text);
 
 /// Sensor model names accepted by --method and sensor_model.
 const std::vector<std::string>& sensorModelNames();
