@@ -43,19 +43,41 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
     return fit;
 }
 
+void FitWindow::scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::math::TPose2D>& poses,
+                           const mrpt::poses::CPose2D& odometry_now, std::vector<double>& log_lik) const {
+    log_lik.assign(poses.size(), 0.0);
+    if (poses.empty() || m_items.empty()) return;
+    const auto model = map.sensorModel();
+    std::vector<mrpt::math::TPose2D> item_poses(poses.size());
+    for (const auto& it : m_items) {
+        const int cls = map.usableClassOf(*it.obs, it.k);
+        if (cls < 0) continue;
+        const auto prepared = model->prepare(cls, it.obs->boxInRobot(it.k), it.obs->footprintInRobot(it.k));
+        if (!prepared) continue;
+        // The frame's robot pose for a robot at p now: p (+) (odometry_now^-1 (+) its odometry pose).
+        const mrpt::poses::CPose2D rel = it.odometry_pose - odometry_now;
+        for (std::size_t i = 0; i < poses.size(); ++i)
+            item_poses[i] = (mrpt::poses::CPose2D(poses[i]) + rel).asTPose();
+        model->accumulateLogLikelihoods(&*prepared, 1, item_poses.data(), item_poses.size(), log_lik.data());
+    }
+}
+
 LocalizationState StateMonitor::update(double cluster_weight, double cluster_std_m, const FitWindow::Fit& fit,
                                        bool had_detections) {
     const bool fit_known = fit.scored >= m_params.fit_min_detections;
     if (m_state == LocalizationState::Localized) {
         const bool recent_known = fit.recent_scored >= m_params.lost_window;
-        if ((recent_known && fit.recent_fraction <= m_params.lost_max_fit) || cluster_weight < m_params.lost_min_weight) {
+        const bool rival_wins = fit.rival_advantage >= m_params.rival_lost_margin;  // false for NaN
+        if ((recent_known && fit.recent_fraction <= m_params.lost_max_fit) || cluster_weight < m_params.lost_min_weight ||
+            rival_wins) {
             m_state = LocalizationState::Lost;
             m_good_updates = 0;
         }
         return m_state;
     }
     if (!had_detections) return m_state;  // nothing new to decide on
-    const bool good = fit_known && fit.fraction >= m_params.localized_min_fit &&
+    const bool ambiguous = fit.rival_advantage > -m_params.rival_margin;  // false for NaN (not searched)
+    const bool good = fit_known && !ambiguous && fit.fraction >= m_params.localized_min_fit &&
                       cluster_weight >= m_params.localized_min_weight && cluster_std_m <= m_params.localized_max_std_m;
     m_good_updates = good ? m_good_updates + 1 : 0;
     if (m_good_updates >= m_params.localized_min_updates) m_state = LocalizationState::Localized;

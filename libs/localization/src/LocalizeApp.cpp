@@ -164,6 +164,7 @@ void LocalizeApp::loadConfig() {
         loadStateParams(params, "State", options.state);
         loadNoveltyParams(params, "DetectionNovelty", options.novelty);
         loadResettingParams(params, "SensorResetting", options.resetting);
+        loadSearchParams(params, "HypothesisSearch", options.search);
     } catch (const std::exception& e) {
         throw std::invalid_argument(config_path + ": " + describeError(e));
     }

@@ -179,6 +179,8 @@ void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string
     if (p.lost_window > p.fit_window) throw std::invalid_argument(where(s, "lost_window") + " must be <= fit_window");
     p.lost_max_fit = readFraction(cfg, s, "lost_max_fit", p.lost_max_fit);
     p.lost_min_weight = readFraction(cfg, s, "lost_min_weight", p.lost_min_weight);
+    p.rival_margin = readPositive(cfg, s, "rival_margin", p.rival_margin, true);
+    p.rival_lost_margin = readPositive(cfg, s, "rival_lost_margin", p.rival_lost_margin, false);
     if (p.lost_max_fit >= p.localized_min_fit)
         throw std::invalid_argument(where(s, "lost_max_fit") + " must be smaller than localized_min_fit");
 }
@@ -199,6 +201,21 @@ void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::st
     p.sampler.position_std_m = readPositive(cfg, s, "position_std_m", p.sampler.position_std_m, true);
     p.sampler.heading_std_rad = readPositive(cfg, s, "heading_std_rad", p.sampler.heading_std_rad, true);
     p.sampler.square_ratio = readFraction(cfg, s, "square_ratio", p.sampler.square_ratio);
+}
+
+void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, HypothesisSearchParams& p) {
+    p.enabled = readBool(cfg, s, "enabled", p.enabled);
+    p.min_window_detections = readCount(cfg, s, "min_window_detections", p.min_window_detections);
+    p.max_candidates = readCount(cfg, s, "max_candidates", p.max_candidates);
+    p.refine_top = readCount(cfg, s, "refine_top", p.refine_top);
+    p.refine_step_m = readPositive(cfg, s, "refine_step_m", p.refine_step_m, false);
+    p.refine_step_rad = readPositive(cfg, s, "refine_step_rad", p.refine_step_rad, false);
+    p.distinct_distance_m = readPositive(cfg, s, "distinct_distance_m", p.distinct_distance_m, false);
+    p.distinct_heading_rad = readPositive(cfg, s, "distinct_heading_rad", p.distinct_heading_rad, false);
+    p.max_hypotheses = readCount(cfg, s, "max_hypotheses", p.max_hypotheses);
+    p.while_global = readBool(cfg, s, "while_global", p.while_global);
+    p.while_localized = readBool(cfg, s, "while_localized", p.while_localized);
+    p.check_period_s = readPositive(cfg, s, "check_period_s", p.check_period_s, true);
 }
 
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paperDefaults() {
@@ -271,13 +288,18 @@ void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string
     checkKnownKeys(cfg, "State",
                    {"fit_window", "fit_max_age_s", "fit_min_detections", "explained_ratio", "localized_min_fit",
                     "localized_min_weight", "localized_max_std_m", "localized_min_updates", "lost_window", "lost_max_fit",
-                    "lost_min_weight"},
+                    "lost_min_weight", "rival_margin", "rival_lost_margin"},
                    file);
     checkKnownKeys(cfg, "DetectionNovelty", {"decorrelation_distance_m", "min_weight", "track_radius_m", "track_timeout_s"},
                    file);
     checkKnownKeys(cfg, "SensorResetting",
                    {"global_fraction", "lost_fraction", "localized_fraction", "uniform_share", "position_std_m",
                     "heading_std_rad", "square_ratio"},
+                   file);
+    checkKnownKeys(cfg, "HypothesisSearch",
+                   {"enabled", "min_window_detections", "max_candidates", "refine_top", "refine_step_m", "refine_step_rad",
+                    "distinct_distance_m", "distinct_heading_rad", "max_hypotheses", "while_global", "while_localized",
+                    "check_period_s"},
                    file);
     checkKnownKeys(cfg, kMotion,
                    {"modelSelection", "a1", "a2", "a3", "a4", "minStdXY", "minStdPHI", "nParticlesCount",

@@ -2,6 +2,7 @@
 
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/math/wrap2pi.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <algorithm>
@@ -72,6 +73,7 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_mcl(std::make_unique<ObjectMcl>(m_map)),
       m_novelty(options.novelty),
       m_sampler(*m_map, *m_free, options.resetting.sampler),
+      m_search(*m_map, m_sampler, options.search),
       m_fit(options.state),
       m_monitor(options.state) {
     const auto& e = m_opts.experiment;
@@ -91,6 +93,7 @@ void Localizer::startGlobal() {
                                  static_cast<int>(m_opts.experiment.particles_count));
     m_monitor.reset(LocalizationState::Global);
     m_summary.reset();
+    m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
 }
 
@@ -103,6 +106,7 @@ void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, doub
     m_mcl->resetAround(pose, sigma_xy_m, sigma_phi_rad, m_opts.experiment.particles_count);
     m_monitor.reset(LocalizationState::Localized);
     m_summary.reset();
+    m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
 }
 
@@ -125,10 +129,49 @@ std::size_t Localizer::injectFromDetections(const std::vector<WeightedObservatio
     if (count == 0) return 0;
     const auto n_uniform = static_cast<std::size_t>(std::lround(r.uniform_share * static_cast<double>(count)));
     auto& rng = mrpt::random::getRandomGenerator();
-    auto poses = m_sampler.sample(observations, count - n_uniform, rng);
+    std::vector<mrpt::math::TPose2D> poses;
+    if (!m_hypotheses.empty()) {
+        // Around the places that explain the fit window best, in equal shares: the weighing that
+        // follows decides between them.
+        if (m_reset_targets.empty()) return 0;
+        const auto& sp = r.sampler;
+        for (std::size_t j = 0; j < count - n_uniform; ++j) {
+            const auto& h = m_reset_targets[j % m_reset_targets.size()].pose;
+            const mrpt::math::TPose2D p(h.x + rng.drawGaussian1D(0.0, sp.position_std_m),
+                                        h.y + rng.drawGaussian1D(0.0, sp.position_std_m),
+                                        mrpt::math::wrapToPi(h.phi + rng.drawGaussian1D(0.0, sp.heading_std_rad)));
+            if (m_free->isFree(p.x, p.y)) poses.push_back(p);
+        }
+    } else {
+        poses = m_sampler.sample(observations, count - n_uniform, rng);
+    }
     if (poses.empty()) return 0;  // nothing in view to reset from: keep the set as it is
     while (poses.size() < count) poses.push_back(m_free->drawUniform());
     return m_mcl->inject(poses);
+}
+
+void Localizer::searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations) {
+    m_hypotheses.clear();
+    m_reset_targets.clear();
+    if (!m_opts.search.enabled || observations.empty()) return;
+    const auto state = m_monitor.state();
+    if (state == LocalizationState::Global && !m_opts.search.while_global) return;
+    if (state == LocalizationState::Localized &&
+        (!m_opts.search.while_localized || t_s - m_last_search_s < m_opts.search.check_period_s))
+        return;
+    m_hypotheses = m_search.search(m_fit, observations, m_odometry);
+    m_last_search_s = t_s;
+    // Particles go only to places that explain the window at least about as well as the estimate
+    // does: spending them on worse places pulled a correct set away after a false `lost`.
+    m_reset_targets.clear();
+    if (m_hypotheses.empty()) return;
+    const mrpt::math::TPose2D estimate =
+        m_summary ? (mrpt::poses::CPose2D(m_summary->estimate) + m_pending).asTPose() : m_hypotheses.front().pose;
+    const double advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, estimate, m_odometry);
+    const double best = m_hypotheses.front().log_likelihood;
+    const double estimate_ll = std::isnan(advantage) ? best : best - advantage;  // NaN: all near the estimate
+    for (const auto& h : m_hypotheses)
+        if (h.log_likelihood >= estimate_ll - m_opts.state.rival_margin) m_reset_targets.push_back(h);
 }
 
 void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<WeightedObservation>& observations,
@@ -183,6 +226,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     const bool trigger = m_first || m_pending.norm() >= e.update_min_d_xy || std::abs(m_pending.phi()) >= e.update_min_d_phi;
     if (trigger) {
         const auto all = m_skipped.merge(observations, m_pending);
+        searchHypotheses(t_s, all);
         const bool no_motion = m_first && m_pending.norm() == 0 && m_pending.phi() == 0;
         update(no_motion ? nullptr : &m_pending, all, rec);
         m_pending = mrpt::poses::CPose2D();
@@ -202,15 +246,20 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     rec.cluster_weight = s.cluster_weight;
     rec.particles = s.particle_count;
     if (!trigger) rec.ess = s.ess;
-    const auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
+    auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
+    if (trigger && !m_hypotheses.empty())
+        fit.rival_advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, now.asTPose(), m_odometry);
     rec.fit = fit.fraction;
     rec.fit_detections = fit.scored;
+    rec.rival_advantage = fit.rival_advantage;
     if (trigger) {
         const auto before = m_monitor.state();
         m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
                          rec.detections > 0);
-        // The detections of the lost hypothesis say nothing about the next one.
-        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost) m_fit.clear();
+        // The detections of the lost hypothesis say nothing about the next one, unless a rival
+        // place explained them (then they are what will find it again).
+        const bool rival_won = fit.rival_advantage >= m_opts.state.rival_lost_margin;
+        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost && !rival_won) m_fit.clear();
     }
     rec.state = m_monitor.state();
     return rec;

@@ -10,7 +10,7 @@ namespace simp::localization {
 std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
            "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
-           "fit_detections,est_std_xy_m,est_std_phi_rad,injected";
+           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats";
 }
 
 std::string stepsCsvLine(const StepRecord& s) {
@@ -24,7 +24,15 @@ std::string stepsCsvLine(const StepRecord& s) {
                   s.cov(0, 1), s.cov(1, 1), s.cov(0, 2), s.cov(1, 2), s.cov(2, 2), s.cluster_weight, s.particles, s.ess,
                   s.detections, s.updated ? 1 : 0, s.pruned, s.seconds, toString(s.state).c_str(), s.fit,
                   s.fit_detections, std_xy, std_phi, s.injected);
-    return line;
+    std::string out(line);
+    out.pop_back();  // the newline, after the rival column
+    if (std::isfinite(s.rival_advantage)) {
+        std::snprintf(line, sizeof(line), ",%.3f\n", s.rival_advantage);
+        out += line;
+    } else {
+        out += ",\n";
+    }
+    return out;
 }
 
 void writeStepsCsv(const std::string& path, const std::vector<StepRecord>& steps) {

@@ -35,10 +35,29 @@ class DetectionPoseSampler {
     std::vector<mrpt::math::TPose2D> sample(const std::vector<WeightedObservation>& observations, std::size_t count,
                                             mrpt::random::CRandomGenerator& rng) const;
 
+    /** Every exact fit (no spread): one pose per (used detection, map object of its class, box
+     * symmetry) whose position is in free space, at most `max_count` (the first ones, in the order
+     * of the detections and the map's objects). */
+    std::vector<mrpt::math::TPose2D> candidates(const std::vector<WeightedObservation>& observations,
+                                                std::size_t max_count) const;
+
    private:
+    struct Usable {
+        Eigen::Vector2d centre_robot_m;
+        double yaw_robot_rad = 0;
+        int symmetries = 2;  ///< 4 for square footprints (heading ambiguous by pi/2), else 2
+        int map_class = -1;
+    };
+    std::vector<Usable> usableDetections(const std::vector<WeightedObservation>& observations) const;
+    /// Robot pose that puts detection d on map object o, turned by `turn` of d's symmetries, with
+    /// the given position and heading offsets.
+    mrpt::math::TPose2D fit(const Usable& d, std::size_t o, int turn, double dphi, double dx, double dy) const;
+
     const maps::CObjectMap& m_map;
     const FreeSpace& m_free;
     DetectionPoseSamplerParams m_params;
+    std::vector<std::vector<std::size_t>> m_by_class;  ///< map objects per class id
+    std::vector<Eigen::Vector2d> m_expected_centre_m;  ///< per object: where its detections land (Eq. shiftdist mean)
 };
 
 }  // namespace simp::localization

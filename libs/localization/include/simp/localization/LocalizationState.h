@@ -17,6 +17,8 @@
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <deque>
+#include <limits>
+#include <vector>
 #include <string>
 
 namespace simp::localization {
@@ -36,7 +38,12 @@ struct StateParams {
     std::size_t localized_min_updates = 3; ///< ... over this many consecutive updates with detections
     std::size_t lost_window = 4;           ///< the lost test looks at this many last detections ...
     double lost_max_fit = 0.0;             ///< localized -> lost when their fit falls to this ...
-    double lost_min_weight = 0.3;          ///< ... or the cluster weight under this
+    double lost_min_weight = 0.3;          ///< ... or the cluster weight under this ...
+    /// ... or a distinct pose (HypothesisSearch) explains the window better than the estimate by
+    /// this log-likelihood (nats); and localized needs the estimate to beat every distinct pose by
+    /// `rival_margin` (a place that looks alike is not a place the robot can act on).
+    double rival_lost_margin = 6.0;
+    double rival_margin = 2.0;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.
@@ -52,12 +59,20 @@ class FitWindow {
         std::size_t scored = 0;     ///< detections in the window
         double recent_fraction = 0; ///< the same over the last lost_window of them
         std::size_t recent_scored = 0;
+        /// Window log-likelihood of the best distinct pose minus the estimate's (nats); NaN when
+        /// no rival was searched at this update.
+        double rival_advantage = std::numeric_limits<double>::quiet_NaN();
     };
     /// Scores the window with the robot at `estimate` (world) now, at odometry pose `odometry_now`:
     /// each detection at estimate (+) (odometry_now^-1 (+) its odometry pose).
     Fit evaluate(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
                  const mrpt::poses::CPose2D& odometry_now, double t_now_s);
     void clear() { m_items.clear(); }
+    std::size_t size() const { return m_items.size(); }
+    /// Log-likelihood of the whole window (sum over its detections, each at its frame's pose) for
+    /// each robot pose `poses[i]` now (world), added to log_lik[i] (resized to poses.size()).
+    void scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::math::TPose2D>& poses,
+                    const mrpt::poses::CPose2D& odometry_now, std::vector<double>& log_lik) const;
 
    private:
     struct Item {

@@ -73,10 +73,12 @@ struct MotionModelOptions : public mrpt::config::CLoadableOptions {
 struct StateParams;
 struct DetectionNoveltyParams;
 struct SensorResettingParams;
-/// [State], [DetectionNovelty], [SensorResetting] (missing keys keep their defaults).
+struct HypothesisSearchParams;
+/// [State], [DetectionNovelty], [SensorResetting], [HypothesisSearch] (missing keys keep their defaults).
 void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, StateParams& p);
 void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, DetectionNoveltyParams& p);
 void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, SensorResettingParams& p);
+void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, HypothesisSearchParams& p);
 
 /// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);

@@ -13,6 +13,7 @@
 #include <mrpt/slam/TKLDParams.h>
 #include <simp/localization/DetectionNovelty.h>
 #include <simp/localization/DetectionPoseSampler.h>
+#include <simp/localization/HypothesisSearch.h>
 #include <simp/localization/LocalizationState.h>
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/ObjectMcl.h>
@@ -20,6 +21,7 @@
 #include <simp/localization/SkippedDetections.h>
 #include <simp/localization/StepRecord.h>
 
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -44,6 +46,7 @@ struct LocalizerOptions {
     StateParams state;
     DetectionNoveltyParams novelty;
     SensorResettingParams resetting;
+    HypothesisSearchParams search;
 
     /// pfStandardProposal, prSystematic, no adaptive size, BETA 0.5 (MRPT's section defaults).
     static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
@@ -75,6 +78,8 @@ class Localizer {
     void update(const mrpt::poses::CPose2D* motion, const std::vector<WeightedObservation>& observations,
                 StepRecord& rec);
     std::size_t injectFromDetections(const std::vector<WeightedObservation>& observations);
+    /// Runs the hypothesis search when due (m_hypotheses is empty otherwise).
+    void searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations);
     std::size_t particleTarget() const;
 
     std::shared_ptr<const maps::CObjectMap> m_map;
@@ -85,6 +90,10 @@ class Localizer {
     mrpt::bayes::CParticleFilter m_pf;
     DetectionNovelty m_novelty;
     DetectionPoseSampler m_sampler;
+    HypothesisSearch m_search;
+    std::vector<Hypothesis> m_hypotheses;  ///< of the current update (empty: not searched)
+    std::vector<Hypothesis> m_reset_targets;  ///< those worth particles (about as good as the estimate or better)
+    double m_last_search_s = -std::numeric_limits<double>::infinity();
     FitWindow m_fit;
     StateMonitor m_monitor;
     SkippedDetections m_skipped;

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct StepRecord {
     LocalizationState state = LocalizationState::Global;  ///< after the frame
     double fit = 0;                  ///< fraction of the last detections the estimate explains (FitWindow)
     std::size_t fit_detections = 0;  ///< detections behind `fit`
+    /// Window log-likelihood of the best distinct place minus the estimate's (nats; HypothesisSearch);
+    /// NaN when not searched at this frame (written empty).
+    double rival_advantage = std::numeric_limits<double>::quiet_NaN();
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 

@@ -1,0 +1,69 @@
+#pragma once
+/// \file HypothesisSearch.h
+/// Where else could the robot be? (not in the paper). Candidate poses are generated from the
+/// current detections (every exact fit of a detection on a map object of its class,
+/// DetectionPoseSampler::candidates) and scored on the whole fit window: the last detections,
+/// each moved by the odometry since its frame. The best distinct poses serve twice:
+///  - sensor resetting while searching or lost injects particles around them, so a kidnapped
+///    robot's new place is found from several seconds of evidence rather than one frame;
+///  - the state compares them with the estimate: a rival that explains the window as well is an
+///    ambiguity (not localized), one that explains it clearly better means the estimate is lost.
+/// Scoring past detections does not count the current update twice: the injected particles get
+/// the set's mean weight, and only the current update weighs them.
+
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/poses/CPose2D.h>
+#include <simp/localization/DetectionPoseSampler.h>
+#include <simp/localization/LocalizationState.h>
+
+#include <vector>
+
+namespace simp::localization {
+
+struct HypothesisSearchParams {
+    bool enabled = false;                 ///< true: search (measured not better yet: doc/results-localization.md)
+    std::size_t min_window_detections = 5; ///< fewer detections in the window: no search
+    std::size_t max_candidates = 4000;    ///< exact fits scored per search (the first ones)
+    std::size_t refine_top = 8;           ///< best distinct candidates refined by a local grid search
+    double refine_step_m = 0.2;           ///< first grid step (m); halved once
+    double refine_step_rad = 0.1;         ///< first grid step (rad); halved once
+    double distinct_distance_m = 1.0;     ///< poses farther apart than this (m) ...
+    double distinct_heading_rad = 0.5;    ///< ... or turned more than this (rad) are distinct places
+    std::size_t max_hypotheses = 4;       ///< distinct poses kept
+    bool while_global = false;            ///< also search while `global` (the first search)
+    bool while_localized = false;         ///< also search while `localized` (rival test for `lost`) ...
+    double check_period_s = 1.0;          ///< ... at most this often (s); always while `lost`
+};
+
+struct Hypothesis {
+    mrpt::math::TPose2D pose;   ///< robot pose now (world)
+    double log_likelihood = 0;  ///< of the fit window at the pose (nats)
+};
+
+class HypothesisSearch {
+   public:
+    HypothesisSearch(const maps::CObjectMap& map, const DetectionPoseSampler& sampler,
+                     const HypothesisSearchParams& params = {});
+
+    /// The best distinct poses, best first (empty when the window is too small or nothing fits).
+    std::vector<Hypothesis> search(const FitWindow& window, const std::vector<WeightedObservation>& observations,
+                                   const mrpt::poses::CPose2D& odometry_now) const;
+
+    /// Best window log-likelihood among `hypotheses` distinct from `pose`, minus the window's
+    /// log-likelihood at `pose`; NaN when every hypothesis is near `pose`.
+    double rivalAdvantage(const FitWindow& window, const std::vector<Hypothesis>& hypotheses,
+                          const mrpt::math::TPose2D& pose, const mrpt::poses::CPose2D& odometry_now) const;
+
+    bool distinct(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const;
+    const HypothesisSearchParams& params() const { return m_params; }
+
+   private:
+    /// Local grid search about h.pose maximizing the window's log-likelihood.
+    void refine(const FitWindow& window, const mrpt::poses::CPose2D& odometry_now, Hypothesis& h) const;
+
+    const maps::CObjectMap& m_map;
+    const DetectionPoseSampler& m_sampler;
+    HypothesisSearchParams m_params;
+};
+
+}  // namespace simp::localization

@@ -1,0 +1,125 @@
+/// HypothesisSearch: candidate places from the current detections, scored on the fit window, and
+/// the rival test of the state built on it.
+
+#include "SyntheticScenario.h"
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+#include <simp/localization/HypothesisSearch.h>
+
+#include <cmath>
+
+using namespace simp::localization;
+using namespace simp::localization::test;
+
+namespace {
+
+HypothesisSearchParams on() {
+    HypothesisSearchParams p;
+    p.enabled = true;
+    return p;
+}
+
+/// The robot's frames: at `robot`, then after driving 0.6 m and turning, each seeing some objects.
+struct Walk {
+    FitWindow window;
+    std::vector<WeightedObservation> last;
+    mrpt::poses::CPose2D odometry_now;
+    mrpt::math::TPose2D robot_now;
+};
+
+Walk walk(const simp::world::World& w, const simp::maps::CObjectMap& map, const mrpt::math::TPose2D& robot,
+          const std::vector<std::vector<int>>& seen) {
+    Walk out;
+    mrpt::poses::CPose2D odo(5, -3, 0.2), pose(robot);  // the odometry frame is not the world's
+    const mrpt::poses::CPose2D step(0.6, 0.0, 0.3);
+    for (std::size_t f = 0; f < seen.size(); ++f) {
+        if (f > 0) odo = odo + step, pose = pose + step;
+        auto obs = observe(w, pose.asTPose(), seen[f]);
+        out.window.add(map, obs, odo, static_cast<double>(f));
+        out.last = {{obs, {}}};
+    }
+    out.odometry_now = odo;
+    out.robot_now = pose.asTPose();
+    return out;
+}
+
+}  // namespace
+
+TEST(DetectionPoseSampler, CandidatesIncludeTheTruePoseAndExplainTheDetection) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const FreeSpace free_space(w.floorplan, 0.7);
+    const DetectionPoseSampler sampler(*map, free_space);
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const auto obs = observe(w, robot, {0});
+    const auto cands = sampler.candidates({{obs, {}}}, 10000);
+    ASSERT_FALSE(cands.empty());
+    bool truth = false;
+    for (const auto& c : cands) {
+        EXPECT_TRUE(free_space.isFree(c.x, c.y));
+        truth |= translationError(c, robot) < 0.05 && headingError(c, robot) < 0.01;
+    }
+    EXPECT_TRUE(truth);
+    EXPECT_EQ(sampler.candidates({{obs, {}}}, 1).size(), 1u);  // capped
+}
+
+TEST(HypothesisSearch, FindsTheTruePlaceFromTheWindow) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const FreeSpace free_space(w.floorplan, 0.7);
+    const DetectionPoseSampler sampler(*map, free_space);
+    const HypothesisSearch search(*map, sampler, on());
+    const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
+    ASSERT_GE(wk.window.size(), 5u);
+    const auto hyps = search.search(wk.window, wk.last, wk.odometry_now);
+    ASSERT_FALSE(hyps.empty());
+    // The best place is the truth (exact detections: within the refinement's last grid step).
+    EXPECT_LT(translationError(hyps.front().pose, wk.robot_now), 0.15);
+    EXPECT_LT(headingError(hyps.front().pose, wk.robot_now), 0.1);
+    for (std::size_t i = 1; i < hyps.size(); ++i) {
+        EXPECT_LE(hyps[i].log_likelihood, hyps[i - 1].log_likelihood);  // best first
+        EXPECT_TRUE(search.distinct(hyps[i].pose, hyps.front().pose));
+    }
+    // The rival test: at the truth no distinct place explains the window as well; at a wrong place
+    // the truth is a rival that explains it clearly better.
+    const double at_truth = search.rivalAdvantage(wk.window, hyps, wk.robot_now, wk.odometry_now);
+    if (!std::isnan(at_truth)) {
+        EXPECT_LT(at_truth, -StateParams{}.rival_margin);
+    }
+    mrpt::math::TPose2D wrong = wk.robot_now;
+    wrong.x += 3.0;
+    wrong.phi = mrpt::math::wrapToPi(wrong.phi + 1.0);
+    EXPECT_GT(search.rivalAdvantage(wk.window, hyps, wrong, wk.odometry_now), StateParams{}.rival_lost_margin);
+}
+
+TEST(HypothesisSearch, NeedsAWindowAndCanBeTurnedOff) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const FreeSpace free_space(w.floorplan, 0.7);
+    const DetectionPoseSampler sampler(*map, free_space);
+    const auto small = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}});
+    EXPECT_TRUE(HypothesisSearch(*map, sampler, on()).search(small.window, small.last, small.odometry_now).empty());
+    HypothesisSearchParams off = on();
+    off.enabled = false;
+    const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}});
+    EXPECT_TRUE(HypothesisSearch(*map, sampler, off).search(wk.window, wk.last, wk.odometry_now).empty());
+}
+
+TEST(StateMonitor, RivalPlacesBlockLocalizedAndMakeItLost) {
+    StateParams p;
+    StateMonitor m(p);
+    FitWindow::Fit good{0.9, 10, 1.0, 4};
+    FitWindow::Fit ambiguous = good;
+    ambiguous.rival_advantage = -0.5 * p.rival_margin;  // a distinct place almost as good
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m.update(0.95, 0.1, ambiguous, true), LocalizationState::Global);
+    FitWindow::Fit clear = good;
+    clear.rival_advantage = -2.0 * p.rival_margin;
+    for (std::size_t i = 0; i < p.localized_min_updates; ++i) m.update(0.95, 0.1, clear, true);
+    EXPECT_EQ(m.state(), LocalizationState::Localized);
+    EXPECT_EQ(m.update(0.95, 0.1, good, true), LocalizationState::Localized);  // not searched: no change
+    FitWindow::Fit beaten = good;
+    beaten.rival_advantage = p.rival_lost_margin + 0.1;
+    EXPECT_EQ(m.update(0.95, 0.1, beaten, true), LocalizationState::Lost);
+}
