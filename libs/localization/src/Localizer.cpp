@@ -4,13 +4,12 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <simp/localization/ParticleSummary.h>
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <stdexcept>
 #include <tuple>
+#include <vector>
 
 namespace simp::localization {
 namespace {
@@ -59,12 +58,14 @@ mrpt::slam::TKLDParams LocalizerOptions::defaultKldParams() {
 }
 
 std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld) {
-    std::set<std::tuple<long, long, long>> bins;
+    std::vector<std::tuple<long, long, long>> bins;
+    bins.reserve(pdf.m_particles.size());
     for (const auto& p : pdf.m_particles)
-        bins.emplace(static_cast<long>(std::floor(p.d.x / kld.KLD_binSize_XY)),
-                     static_cast<long>(std::floor(p.d.y / kld.KLD_binSize_XY)),
-                     static_cast<long>(std::floor(p.d.phi / kld.KLD_binSize_PHI)));
-    const double k = static_cast<double>(bins.size());
+        bins.emplace_back(static_cast<long>(std::floor(p.d.x / kld.KLD_binSize_XY)),
+                          static_cast<long>(std::floor(p.d.y / kld.KLD_binSize_XY)),
+                          static_cast<long>(std::floor(p.d.phi / kld.KLD_binSize_PHI)));
+    std::sort(bins.begin(), bins.end());
+    const double k = static_cast<double>(std::unique(bins.begin(), bins.end()) - bins.begin());
     if (k <= 1) return kld.KLD_minSampleSize;
     const double z = standardNormalQuantile(1.0 - kld.KLD_delta);
     const double a = 2.0 / (9.0 * (k - 1.0));
@@ -102,6 +103,7 @@ void Localizer::startGlobal() {
     m_mcl->resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold,
                                  static_cast<int>(m_opts.experiment.particles_count));
     m_monitor.reset(LocalizationState::Global);
+    m_summary.reset();
     m_first = true;
 }
 
@@ -113,6 +115,7 @@ void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, doub
         throw std::invalid_argument("initial pose: sigma_xy and sigma_phi must be >= 0");
     m_mcl->resetAround(pose, sigma_xy_m, sigma_phi_rad, m_opts.experiment.particles_count);
     m_monitor.reset(LocalizationState::Localized);
+    m_summary.reset();
     m_first = true;
 }
 
@@ -201,7 +204,8 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         m_skipped.add(observations, m_pending);
     }
 
-    const ParticleSummary s = summarizeParticles(*m_mcl, e);
+    if (trigger || !m_summary) m_summary = summarizeParticles(*m_mcl, e);
+    const ParticleSummary& s = *m_summary;
     // The pose now: the filter's estimate moved by the odometry it has not applied yet.
     const mrpt::poses::CPose2D now = mrpt::poses::CPose2D(s.estimate) + m_pending;
     rec.estimate = now.asTPose();

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <tuple>
 #include <vector>
@@ -66,16 +65,31 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         return s;
     }
 
-    // Peak bin: most weight in its 3x3x3 neighbourhood (heading bins wrap around).
+    // Peak bin: most weight in its 3x3x3 neighbourhood (heading bins wrap around). The bins are a
+    // sorted vector (one sort instead of a node per bin: this runs at every update); ties go to
+    // the smallest key, as with an ordered map.
     const int nb = opts.cluster_phi_bins;
     using Key = std::tuple<long, long, int>;
-    std::map<Key, double> bins;
     auto keyOf = [&](const mrpt::math::TPose2D& p) {
         const double u = (mrpt::math::wrapTo2Pi(p.phi)) / (2 * M_PI) * nb;
         return Key{static_cast<long>(std::floor(p.x / opts.cluster_cell_m)),
                    static_cast<long>(std::floor(p.y / opts.cluster_cell_m)), std::min(nb - 1, static_cast<int>(u))};
     };
-    for (std::size_t i = 0; i < n; ++i) bins[keyOf(pdf.m_particles[i].d)] += w[i];
+    std::vector<Key> keys(n);
+    for (std::size_t i = 0; i < n; ++i) keys[i] = keyOf(pdf.m_particles[i].d);
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b] || (keys[a] == keys[b] && a < b); });
+    std::vector<std::pair<Key, double>> bins;
+    for (const std::size_t i : order) {
+        if (bins.empty() || bins.back().first != keys[i]) bins.emplace_back(keys[i], 0.0);
+        bins.back().second += w[i];
+    }
+    auto binWeight = [&](const Key& k) {
+        const auto it = std::lower_bound(bins.begin(), bins.end(), k,
+                                         [](const std::pair<Key, double>& b, const Key& key) { return b.first < key; });
+        return it != bins.end() && it->first == k ? it->second : 0.0;
+    };
     Key best{};
     double best_w = -1;
     for (const auto& [k, bw] : bins) {
@@ -83,16 +97,14 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         double sum = 0;
         for (long dx = -1; dx <= 1; ++dx)
             for (long dy = -1; dy <= 1; ++dy)
-                for (int dp = (nb >= 3 ? -1 : 0); dp <= (nb >= 3 ? 1 : 0); ++dp) {
-                    const auto it = bins.find({std::get<0>(k) + dx, std::get<1>(k) + dy, (std::get<2>(k) + dp + nb) % nb});
-                    if (it != bins.end()) sum += it->second;
-                }
+                for (int dp = (nb >= 3 ? -1 : 0); dp <= (nb >= 3 ? 1 : 0); ++dp)
+                    sum += binWeight({std::get<0>(k) + dx, std::get<1>(k) + dy, (std::get<2>(k) + dp + nb) % nb});
         if (sum > best_w) best_w = sum, best = k;
     }
     // Seed pose: weighted mean of the peak bin's neighbourhood.
     WeightedMean seed;
     for (std::size_t i = 0; i < n; ++i) {
-        const Key k = keyOf(pdf.m_particles[i].d);
+        const Key& k = keys[i];
         const long dx = std::get<0>(k) - std::get<0>(best), dy = std::get<1>(k) - std::get<1>(best);
         const int dp = ((std::get<2>(k) - std::get<2>(best)) % nb + nb) % nb;
         if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == nb - 1 || nb < 3))

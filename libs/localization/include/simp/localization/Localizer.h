@@ -16,10 +16,12 @@
 #include <simp/localization/LocalizationState.h>
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/ObjectMcl.h>
+#include <simp/localization/ParticleSummary.h>
 #include <simp/localization/SkippedDetections.h>
 #include <simp/localization/StepRecord.h>
 
 #include <memory>
+#include <optional>
 
 namespace simp::localization {
 
@@ -91,6 +93,9 @@ class Localizer {
     SkippedDetections m_skipped;
     mrpt::poses::CPose2D m_pending;   ///< odometry not yet applied to the particles
     mrpt::poses::CPose2D m_odometry;  ///< integrated odometry (odometry frame)
+    /// Summary of the particle set as of the last update: the set changes only at updates, and
+    /// summarizing 5000 particles at every 10 Hz frame was a quarter of a run's time.
+    std::optional<ParticleSummary> m_summary;
     bool m_first = true;
 };
 
