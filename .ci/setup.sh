@@ -33,7 +33,7 @@ cmake --build "$BUILD_DIR" -j"$(nproc)"
 # ---- install check (issue #18): the installed tree alone runs and builds a consumer project ----
 # Installs into a temporary prefix, moves it (RUNPATHs must be relative: $ORIGIN/../lib), runs the
 # INSTALLED apps on a small generated office, builds examples/ against the installed CMake package
-# and runs it, and has MRPT's rawlog-edit load the installed plugin. About a minute.
+# and runs it, and has MRPT's rawlog-edit load the installed plugin (about 15 s of CPU).
 SIMP_ROOT="$(pwd)"
 SIMP_BUILD_ABS="$(cd "$BUILD_DIR" && pwd)"
 install_check() {
