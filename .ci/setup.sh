@@ -30,10 +30,45 @@ if [ "${CI:-}" = "true" ]; then WERROR=ON; fi
 cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DSIMP_WERROR="$WERROR"
 cmake --build "$BUILD_DIR" -j"$(nproc)"
 
+# ---- install check (issue #18): the installed tree alone runs and builds a consumer project ----
+# Installs into a temporary prefix, moves it (RUNPATHs must be relative: $ORIGIN/../lib), runs the
+# INSTALLED apps on a small generated office, builds examples/ against the installed CMake package
+# and runs it, and has MRPT's rawlog-edit load the installed plugin (about 15 s of CPU).
+SIMP_ROOT="$(pwd)"
+SIMP_BUILD_ABS="$(cd "$BUILD_DIR" && pwd)"
+install_check() {
+  local work prefix
+  work="$(mktemp -d)"
+  cmake --install "$SIMP_BUILD_ABS" --prefix "$work/stage" > "$work/install.log"
+  mv "$work/stage" "$work/simp"   # relocated: nothing may point at the install or build path
+  prefix="$work/simp"
+  if readelf -d "$prefix"/bin/* "$prefix"/lib/*.so | grep -E 'R(UN)?PATH' | grep -v '\[\$ORIGIN/../lib\]$'; then
+    echo "[install-check] FAILED: a RUNPATH other than \$ORIGIN/../lib (above)" >&2; return 1
+  fi
+  "$prefix/bin/simp-sim" world --builtin office --seed 1 --out "$work/w" > "$work/sim.log" 2>&1
+  "$prefix/bin/simp-sim" sequence --world "$work/w" --seed 2 --out "$work/q" --duration 20 >> "$work/sim.log" 2>&1
+  # simp-localize without --config on the built-in office (classes without a noise model: doors)
+  "$prefix/bin/simp-localize" --world "$work/w" --rawlog "$work/q/sequence.rawlog" --out "$work/o" \
+    --particles 2000 --quiet
+  test -s "$work/o/steps.csv"
+  cmake -S "$SIMP_ROOT/examples" -B "$work/example" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" > /dev/null
+  cmake --build "$work/example" -j"$(nproc)" > /dev/null
+  "$work/example/localize_rawlog" "$work/w" "$work/q/sequence.rawlog" "$work/q/groundtruth.tum" 2000
+  # Without the plugin rawlog-edit stops at the first observation and lists no sensor label.
+  rawlog-edit --plugins "$prefix/lib/libsimp_obs.so" --info -i "$work/q/sequence.rawlog" > "$work/info.txt" 2>&1
+  grep -q "All sensor labels *: CAMERA_0" "$work/info.txt" || {
+    echo "[install-check] FAILED: rawlog-edit did not read the observations with the installed plugin" >&2
+    cat "$work/info.txt" >&2; return 1; }
+  echo "[install-check] OK: installed into a temporary prefix, relocated, example built and run, plugin loaded"
+  rm -rf "$work"
+}
+# ---- end of install check ----
+
 case "$mode" in
   test)
     cd "$BUILD_DIR"
     ctest --output-on-failure -j"$(nproc)" --timeout 900
+    install_check
     ;;
   demo)
     if [ -x "$BUILD_DIR/bin/simp-demo" ]; then

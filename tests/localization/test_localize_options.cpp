@@ -12,7 +12,7 @@ TEST(LocalizeOptions, DefaultsAreThePapers) {
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.10);
     EXPECT_DOUBLE_EQ(e.update_min_d_phi, 0.03);
     EXPECT_TRUE(e.singw_per_frame);
-    EXPECT_TRUE(e.prune_keeps_weight);
+    EXPECT_FALSE(e.prune_keeps_weight);  // simp.ini's (the paper's true is in simp-paper.ini)
     EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.0);  // recovery is not the paper's: off
     const auto m = MotionModelOptions::paperDefaults();
     EXPECT_EQ(m.modelSelection, mrpt::obs::CActionRobotMovement2D::mmGaussian);

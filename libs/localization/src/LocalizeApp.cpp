@@ -30,20 +30,6 @@ constexpr long long kMaxParticles = 500000;
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// The object map: from the .ini's [MetricMap] (MRPT's TSetOfMetricMapInitializers, which can
-/// create "semanticObjectMap" / "simp::maps::CObjectMap"), else one with default options.
-std::shared_ptr<maps::CObjectMap> makeObjectMap(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
-    if (!cfg.sectionExists("MetricMap")) return std::make_shared<maps::CObjectMap>();
-    mrpt::maps::TSetOfMetricMapInitializers inits;
-    inits.loadFromConfigFile(cfg, "MetricMap");
-    mrpt::maps::CMultiMetricMap multi;
-    multi.setListOfMaps(inits);
-    auto map = multi.mapByClass<maps::CObjectMap>();
-    if (!map)
-        throw std::invalid_argument(file + ": [MetricMap] creates no semanticObjectMap (set semanticObjectMap_count=1)");
-    return map;
-}
-
 void writeParticles(const std::string& path, const mrpt::slam::CMonteCarloLocalization2D& pdf) {
     std::ofstream f(path);
     if (!f) throw std::runtime_error("cannot write '" + path + "'");
@@ -66,6 +52,28 @@ class RecordingOutput : public TCLAP::StdOutput {
 };
 
 }  // namespace
+
+maps::CObjectMap::TLikelihoodOptions defaultLikelihoodOptions() {
+    maps::CObjectMap::TLikelihoodOptions o;
+    o.skip_classes_without_noise = true;
+    return o;
+}
+
+std::shared_ptr<maps::CObjectMap> makeObjectMap(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
+    if (!cfg.sectionExists("MetricMap")) {
+        auto map = std::make_shared<maps::CObjectMap>();
+        map->likelihoodOptions = defaultLikelihoodOptions();
+        return map;
+    }
+    mrpt::maps::TSetOfMetricMapInitializers inits;
+    inits.loadFromConfigFile(cfg, "MetricMap");
+    mrpt::maps::CMultiMetricMap multi;
+    multi.setListOfMaps(inits);
+    auto map = multi.mapByClass<maps::CObjectMap>();
+    if (!map)
+        throw std::invalid_argument(file + ": [MetricMap] creates no semanticObjectMap (set semanticObjectMap_count=1)");
+    return map;
+}
 
 std::string describeError(const std::exception& e) {
     const std::string all = mrpt::exception_to_str(e);
@@ -164,7 +172,11 @@ void LocalizeApp::loadConfig() {
         loadStateParams(params, "State", options.state);
         loadNoveltyParams(params, "DetectionNovelty", options.novelty);
         loadResettingParams(params, "SensorResetting", options.resetting);
+<<<<<<< HEAD
         loadSearchParams(params, "HypothesisSearch", options.search);
+=======
+        config_notes = reconcilePfOptions(options.pf);
+>>>>>>> pkg
     } catch (const std::exception& e) {
         throw std::invalid_argument(config_path + ": " + describeError(e));
     }
@@ -179,6 +191,8 @@ void LocalizeApp::run() {
     std::ostream& out = log ? *log : std::cerr;
     const bool verbose = show_progress || log != nullptr;
     const auto& experiment = options.experiment;
+    if (verbose)
+        for (const auto& note : config_notes) out << "simp-localize: note: " << config_path << ": " << note << "\n";
 
     // Inputs.
     if (!fs::is_directory(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");

@@ -234,6 +234,16 @@ mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paper
 
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::defaults() {
     auto o = paperDefaults();
+    // The Thrun model's knobs (unused by the gaussian model) as the .ini files write MRPT's
+    // defaults, so that no field differs between the defaults and config_ini/simp.ini.
+    auto& t = o.thrunModel;
+    t.nParticlesCount = 300;
+    t.alfa1_rot_rot = static_cast<float>(0.05);
+    t.alfa2_rot_trans = static_cast<float>(0.0698);
+    t.alfa3_trans_trans = static_cast<float>(0.01);
+    t.alfa4_trans_rot = static_cast<float>(0.0057);
+    t.additional_std_XY = static_cast<float>(0.001);
+    t.additional_std_phi = static_cast<float>(0.00087);
     o.gaussianModel.a1 = 0.05;  // m / m
     o.gaussianModel.a4 = 0.05;  // rad / rad
     return o;
@@ -275,6 +285,19 @@ void MotionModelOptions::dumpToTextStream(std::ostream& out) const {
         << "a1 (m/m) = " << o.gaussianModel.a1 << ", a2 (m/rad) = " << o.gaussianModel.a2
         << ", a3 (rad/m) = " << o.gaussianModel.a3 << ", a4 (rad/rad) = " << o.gaussianModel.a4 << "\n"
         << "minStdXY (m) = " << o.gaussianModel.minStdXY << ", minStdPHI (rad) = " << o.gaussianModel.minStdPHI << "\n";
+}
+
+std::vector<std::string> reconcilePfOptions(mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf) {
+    std::vector<std::string> notes;
+    using PF = mrpt::bayes::CParticleFilter;
+    // MRPT 2.5's KLD-sampling prediction (CMonteCarloLocalization2D, pfStandardProposal) throws
+    // "resamplingMethod must be 'prMultinomial'" for any other method.
+    if (pf.adaptiveSampleSize && pf.resamplingMethod != PF::prMultinomial) {
+        notes.push_back("[PF_options] adaptiveSampleSize = true (KLD sampling): resamplingMethod set to prMultinomial "
+                        "(MRPT's KLD sampling supports no other)");
+        pf.resamplingMethod = PF::prMultinomial;
+    }
+    return notes;
 }
 
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {

@@ -1,5 +1,6 @@
 #include <simp/localization/Localizer.h>
 
+#include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/math/wrap2pi.h>
@@ -43,6 +44,18 @@ mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizerOptions::defaultPf
     o.BETA = 0.5;
     o.sampleSize = 1;
     return o;
+}
+
+mrpt::slam::TKLDParams LocalizerOptions::defaultKldParams() {
+    mrpt::slam::TKLDParams k;
+    k.KLD_binSize_XY = 0.20;                  // m
+    k.KLD_binSize_PHI = mrpt::DEG2RAD(5.0);   // rad (the .ini gives degrees)
+    k.KLD_delta = 0.01;
+    k.KLD_epsilon = 0.02;
+    k.KLD_minSampleSize = 1000;
+    k.KLD_maxSampleSize = 20000;
+    k.KLD_minSamplesPerBin = 0;
+    return k;
 }
 
 std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld) {

@@ -11,8 +11,10 @@
 #include <simp/localization/Localizer.h>
 #include <simp/localization/ParticleSummary.h>
 #include <simp/localization/StepRecord.h>
+#include <simp/maps/CObjectMap.h>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -44,6 +46,9 @@ class LocalizeApp {
     std::optional<std::array<double, 5>> initial_pose;
     bool show_progress = true;               ///< progress lines on stderr
     std::ostream* log = nullptr;             ///< informative messages (nullptr: std::cerr unless quiet)
+    /// What the loader changed so that the .ini's settings work together (reconcilePfOptions);
+    /// run() logs each line.
+    std::vector<std::string> config_notes;
     /// @}
 
     /// @name Results of run()
@@ -59,6 +64,16 @@ class LocalizeApp {
    private:
     void loadConfig();
 };
+
+/// The object map's likelihood options of simp-localize without --config: config_ini/simp.ini's
+/// (the map's own defaults except skip_classes_without_noise = true, so that a class without a
+/// noise model, e.g. the built-in office's doors, is ignored rather than an error).
+maps::CObjectMap::TLikelihoodOptions defaultLikelihoodOptions();
+
+/// The object map: from the .ini's [MetricMap] (MRPT's TSetOfMetricMapInitializers, which can create
+/// "semanticObjectMap" / "simp::maps::CObjectMap"); without [MetricMap], one with
+/// defaultLikelihoodOptions(). \throw std::invalid_argument naming `file` when [MetricMap] creates none.
+std::shared_ptr<maps::CObjectMap> makeObjectMap(const mrpt::config::CConfigFileBase& cfg, const std::string& file);
 
 /// --initial-pose "x,y,phi[,sigma_xy,sigma_phi]" -> {x, y, phi, sigma_xy, sigma_phi} (defaults 0.2 m,
 /// 0.1 rad). \throw std::invalid_argument naming the text when malformed.

@@ -3,6 +3,7 @@
 /// The project's own .ini keys of simp-localize: [LocalizationExperiment] and [MotionModel].
 /// MRPT's own sections ([PF_options], [KLD_options], [MetricMap]) are read by MRPT's loaders.
 
+#include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -26,7 +27,9 @@ enum class ReportFrom {
     Start       ///< at the first frame (the paper's evaluation)
 };
 
-/// [LocalizationExperiment]: the run itself.
+/// [LocalizationExperiment]: the run itself. Every default here and in the other option structs of
+/// simp-localize is config_ini/simp.ini's value, so the app without --config runs as with simp.ini
+/// (tests/localization/test_defaults.cpp compares them field by field).
 struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
     std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
@@ -36,13 +39,13 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
     bool keep_skipped_detections = true;  ///< use the detections of skipped frames at the next update
-    bool prune_keeps_weight = true;       ///< pruned particles keep their weight (false: smallest weight)
+    bool prune_keeps_weight = false;      ///< pruned particles keep their weight (false: smallest weight)
     bool singw_per_frame = true;          ///< Eq. singw per camera frame, product over the update's frames
     double recovery_alpha_slow = 0.0;     ///< augmented-MCL long-term average rate (0 = no recovery)
     double recovery_alpha_fast = 0.0;     ///< augmented-MCL short-term average rate (0 = no recovery)
     EstimateMode estimate_mode = EstimateMode::Cluster;
     double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
-    double cluster_max_dphi = 0.7853981633974483;  ///< cluster: and within this heading difference (rad)
+    double cluster_max_dphi = 0.785398;   ///< cluster: and within this heading difference (rad; pi/4 as the .ini files write it)
     double cluster_cell_m = 0.5;          ///< cluster: xy bin size used to find the peak (m)
     int cluster_phi_bins = 8;             ///< cluster: heading bins used to find the peak
     /// While localized, the particle count follows a KLD bound ([KLD_options] bins) between this and
@@ -79,6 +82,11 @@ void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string
 void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, DetectionNoveltyParams& p);
 void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, SensorResettingParams& p);
 void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, HypothesisSearchParams& p);
+
+/// [PF_options] settings that MRPT needs together: KLD sampling (adaptiveSampleSize = true) in MRPT
+/// 2.5's 2D MCL draws with multinomial resampling only, so it sets resamplingMethod = prMultinomial.
+/// Returns one note per change for the log (empty: nothing changed).
+std::vector<std::string> reconcilePfOptions(mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf);
 
 /// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
 void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);

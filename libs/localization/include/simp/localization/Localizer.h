@@ -42,7 +42,7 @@ struct LocalizerOptions {
     ExperimentOptions experiment;
     MotionModelOptions motion;
     mrpt::bayes::CParticleFilter::TParticleFilterOptions pf = defaultPfOptions();
-    mrpt::slam::TKLDParams kld;
+    mrpt::slam::TKLDParams kld = defaultKldParams();
     StateParams state;
     DetectionNoveltyParams novelty;
     SensorResettingParams resetting;
@@ -50,6 +50,9 @@ struct LocalizerOptions {
 
     /// pfStandardProposal, prSystematic, no adaptive size, BETA 0.5 (MRPT's section defaults).
     static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
+    /// config_ini/simp.ini's [KLD_options]: bins 0.2 m x 5 deg, delta 0.01, epsilon 0.02, 1000 to
+    /// 20000 particles (MRPT's own defaults differ).
+    static mrpt::slam::TKLDParams defaultKldParams();
 };
 
 class Localizer {
