@@ -172,11 +172,8 @@ void LocalizeApp::loadConfig() {
         loadStateParams(params, "State", options.state);
         loadNoveltyParams(params, "DetectionNovelty", options.novelty);
         loadResettingParams(params, "SensorResetting", options.resetting);
-<<<<<<< HEAD
         loadSearchParams(params, "HypothesisSearch", options.search);
-=======
         config_notes = reconcilePfOptions(options.pf);
->>>>>>> pkg
     } catch (const std::exception& e) {
         throw std::invalid_argument(config_path + ": " + describeError(e));
     }
