@@ -28,11 +28,13 @@ struct Data {
     std::string dir, world, seq;
 };
 
-/// A 4-room office and a 60 s sequence in it (no changes), generated once for the suite.
+/// A 4-room office and a 60 s sequence in it (no changes), generated once per test in a folder of its
+/// own (CTest may run the tests of this file in parallel).
 const Data& data() {
     static const Data d = [] {
         Data x;
-        x.dir = std::string(SIMP_TEST_OUTPUT_DIR) + "/pf_localization";
+        x.dir = std::string(SIMP_TEST_OUTPUT_DIR) + "/pf_localization/" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name();
         x.world = x.dir + "/world";
         x.seq = x.dir + "/seq";
         fs::remove_all(x.dir);
