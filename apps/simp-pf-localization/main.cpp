@@ -8,8 +8,44 @@
 #include <simp/maps/registerAllClasses.h>
 #include <simp/obs/registerAllClasses.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace {
+
+/// The `$env{NAME}` of the .ini that are not set: MRPT would silently substitute "" (paths such as
+/// "/sequence.rawlog" then fail far from the cause).
+std::string unsetEnvironmentVariables(const std::string& ini_path) {
+    std::ifstream f(ini_path);
+    std::string line, missing;
+    const std::regex env(R"(\$env\{([A-Za-z_][A-Za-z0-9_]*)\})");
+    while (std::getline(f, line)) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line[first] == '#' || line[first] == ';') continue;  // comments
+        for (std::sregex_iterator it(line.begin(), line.end(), env), end; it != end; ++it) {
+            const std::string name = (*it)[1];
+            if (!std::getenv(name.c_str()) && (" " + missing + ",").find(" " + name + ",") == std::string::npos)
+                missing += (missing.empty() ? "" : ", ") + name;
+        }
+    }
+    return missing;
+}
+
+/// MRPT's exception text reduced to its "Message:" lines (no call stacks).
+std::string messagesOf(const std::string& text) {
+    std::istringstream in(text);
+    std::string line, out;
+    while (std::getline(in, line))
+        if (line.rfind("Message:", 0) == 0) out += (out.empty() ? "" : "\n") + line.substr(9);
+    return out.empty() ? text : out;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
@@ -19,6 +55,17 @@ int main(int argc, char** argv) {
                      "  config_ini/pf-localization.ini; see doc/plugin.md.\n";
         return 0;
     }
+    if (argc >= 2) {
+        if (!std::ifstream(argv[1])) {
+            std::cerr << "simp-pf-localization: error: " << argv[1] << ": configuration file not found\n";
+            return 1;
+        }
+        if (const std::string unset = unsetEnvironmentVariables(argv[1]); !unset.empty()) {
+            std::cerr << "simp-pf-localization: error: " << argv[1] << " uses $env{...} of unset environment variables: "
+                      << unset << " (doc/plugin.md)\n";
+            return 1;
+        }
+    }
     try {
         simp::obs::registerAllClasses();
         simp::maps::registerAllClasses();
@@ -27,7 +74,7 @@ int main(int argc, char** argv) {
         app.run();
         return 0;
     } catch (const std::exception& e) {
-        std::cerr << "simp-pf-localization: error: " << mrpt::exception_to_str(e) << "\n";
+        std::cerr << "simp-pf-localization: error: " << messagesOf(mrpt::exception_to_str(e)) << "\n";
         return 1;
     }
 }

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace fs = std::filesystem;
 
@@ -121,4 +122,32 @@ TEST(PfLocalization, SimpPfLocalizationNeedsNoPreload) {
     const double err = lastGtError(out + "_000_0005000/GT_error.txt");
     std::cout << "final error: simp-pf-localization " << err << " m\n";
     EXPECT_LT(err, kConvergedM);
+}
+
+TEST(PfLocalization, SimpPfLocalizationNamesUnsetVariablesAndMissingFiles) {
+    const std::string prog = kBinary + "/bin/simp-pf-localization";
+    if (!fs::exists(prog)) GTEST_SKIP() << prog << " not built (mrpt-apps development files missing)";
+    const std::string dir = std::string(SIMP_TEST_OUTPUT_DIR) + "/pf_localization/errors";
+    fs::create_directories(dir);
+    const auto run = [&](const std::string& env, const std::string& ini) {
+        const std::string log = dir + "/out.txt";
+        const int rc = std::system(("env -u SIMP_PF_MAP -u SIMP_PF_SEQ -u SIMP_PF_OUT " + env + " '" + prog + "' '" + ini +
+                                    "' > '" + log + "' 2>&1 < /dev/null")
+                                       .c_str());
+        std::ifstream f(log);
+        std::stringstream text;
+        text << f.rdbuf();
+        return std::make_pair(rc, text.str());
+    };
+    const std::string ini = kSource + "/config_ini/pf-localization.ini";
+    auto [rc, text] = run("", ini);
+    EXPECT_NE(rc, 0);
+    EXPECT_NE(text.find("SIMP_PF_MAP"), std::string::npos) << text;
+    EXPECT_NE(text.find("SIMP_PF_SEQ"), std::string::npos) << text;
+    std::tie(rc, text) = run("SIMP_PF_MAP=" + dir + " SIMP_PF_SEQ=" + dir + "/none SIMP_PF_OUT=" + dir + "/o", ini);
+    EXPECT_NE(rc, 0);
+    EXPECT_NE(text.find(dir + "/none/sequence.rawlog"), std::string::npos) << text;
+    std::tie(rc, text) = run("", dir + "/none.ini");
+    EXPECT_NE(rc, 0);
+    EXPECT_NE(text.find("none.ini"), std::string::npos) << text;
 }
