@@ -147,6 +147,10 @@ TEST(OctomapExport, RefusesBadResolutionSizeAndExtension) {
 
 TEST(OctomapExport, IniKeysAreReadAndCheckedByName) {
     const std::string dir = simp_test::freshDir();
+    const auto shipped = simp::export3d::loadOctomapExportOptions(std::string(SIMP_SOURCE_DIR) + "/config_ini/octomap.ini");
+    EXPECT_DOUBLE_EQ(shipped.resolution_m, OctomapExportOptions{}.resolution_m);  // the file states the defaults
+    EXPECT_DOUBLE_EQ(shipped.ceiling_height_m, OctomapExportOptions{}.ceiling_height_m);
+    EXPECT_DOUBLE_EQ(shipped.max_voxels, OctomapExportOptions{}.max_voxels);
     std::ofstream(dir + "/ok.ini") << "[octomap]\nresolution_m = 0.1\nceiling_height_m = 3.0\nmark_free_space = false\n";
     const auto opt = simp::export3d::loadOctomapExportOptions(dir + "/ok.ini");
     EXPECT_DOUBLE_EQ(opt.resolution_m, 0.1);

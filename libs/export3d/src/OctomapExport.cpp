@@ -232,7 +232,7 @@ std::string exportOctomapCommand(const simp::world::World& world, const std::str
         << " m, walls " << s.wall_cells << " floor-plan cells extruded " << opt.floor_z_m << " .. "
         << opt.ceiling_height_m << " m, " << s.objects << " object boxes (" << s.closed_doors << " closed doors, "
         << s.open_doors_skipped << " open doors left out), " << s.free_cells << " free cells; "
-        << static_cast<long long>(s.estimated_voxels) << " voxels set, "
+        << static_cast<long long>(s.estimated_voxels) << " voxels estimated (checked against max_voxels), "
         << s.occupied_leaves << " occupied and " << s.free_leaves << " free leaves after pruning\n";
     return out.str();
 }
