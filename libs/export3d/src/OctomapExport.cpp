@@ -7,13 +7,15 @@
 #include <simp/maps/CObjectMap.h>
 
 #include <algorithm>
-#include <memory>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iostream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace simp::export3d {
 namespace {
@@ -226,6 +228,9 @@ std::string exportOctomapCommand(const simp::world::World& world, const std::str
         opt.resolution_m = r;
         opt.validate("option --resolution:");
     }
+    std::cerr << "simp-export-map: building the OctoMap of about "
+              << static_cast<long long>(estimateVoxels(world, opt)) << " voxels at " << opt.resolution_m
+              << " m ...\n";  // progress: several seconds for an office at 0.05 m
     const auto s = writeWorldOctomap(world, opt, path);
     std::ostringstream out;
     out << "Wrote the 3D map as OctoMap " << path << " (" << s.bytes << " bytes): resolution " << opt.resolution_m
