@@ -5,6 +5,7 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
+#include <simp/io/MrptGroundTruth.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/sim/DetectionModel.h>
 #include <simp/sim/People.h>
@@ -192,6 +193,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     }
     file.close();
     io::writeTum(out_dir + "/groundtruth.tum", traj);
+    io::writeMrptGroundTruth(out_dir + "/groundtruth_mrpt.txt", traj);  // for pf-localization (doc/plugin.md)
     world::saveWorld(w, out_dir + "/world");
     saveChangesJson(summary.changes, w.objects.class_names, out_dir + "/changes.json");
     const std::string kidnap_path = out_dir + "/kidnap.json";

@@ -1,3 +1,4 @@
+#include <simp/world/Gridmap.h>
 #include <simp/world/MapConvertApps.h>
 
 #include <map>
@@ -78,17 +79,31 @@ int ImportMapApp::run(std::ostream& out) {
 }
 
 std::string ExportMapApp::usage() {
-    return "usage: simp-export-map --world W --out D\n"
-           "  Writes the world directory W in the authors' map format into D (floor.config,\n"
-           "  global_variance.json/.csv, Map.yaml + Map.png, roomseg.png, class_noise.csv,\n"
-           "  category_meta.json). See doc/import-export.md.\n";
+    return "usage: simp-export-map --world W [--out D] [--gridmap F.gridmap] [--octomap F.bt|F.ot]\n"
+           "                       [--resolution M] [--config INI]\n"
+           "  --out D      the world directory W in the authors' map format (floor.config,\n"
+           "               global_variance.json/.csv, Map.yaml + Map.png, roomseg.png, class_noise.csv,\n"
+           "               category_meta.json). See doc/import-export.md.\n"
+           "  --gridmap F  the floor plan as MRPT's .gridmap (gzip-compressed COccupancyGridMap2D), the\n"
+           "               map_file of MRPT's pf-localization. See doc/plugin.md.\n"
+           "  --octomap F  the 3D metric-semantic map through OctoMap: .bt (OcTree, binary) or .ot\n"
+           "               (ColorOcTree with class colours): walls extruded to the ceiling, closed doors,\n"
+           "               object boxes, free space. --resolution M: voxel edge (m, default 0.05, overrides\n"
+           "               [octomap] resolution_m of --config INI). See doc/import-export.md.\n"
+           "  At least one of --out, --gridmap, --octomap.\n";
 }
 
 void ExportMapApp::initialize(int argc, const char* const* argv) {
-    parseArgs(argc, argv, {{"--world", &world_dir}, {"--out", &out_dir}}, help_, usage());
+    parseArgs(argc, argv,
+              {{"--world", &world_dir}, {"--out", &out_dir}, {"--gridmap", &gridmap_path}, {"--octomap", &octomap_path},
+               {"--config", &config_ini}, {"--resolution", &resolution}},
+              help_, usage());
     if (help_) return;
     if (world_dir.empty()) throw std::invalid_argument("missing --world W\n" + usage());
-    if (out_dir.empty()) throw std::invalid_argument("missing --out D\n" + usage());
+    if (out_dir.empty() && gridmap_path.empty() && octomap_path.empty())
+        throw std::invalid_argument("nothing to write: give --out D, --gridmap F or --octomap F\n" + usage());
+    if (octomap_path.empty() && (!config_ini.empty() || !resolution.empty()))
+        throw std::invalid_argument("--config and --resolution are options of --octomap\n" + usage());
 }
 
 int ExportMapApp::run(std::ostream& out) {
@@ -96,10 +111,25 @@ int ExportMapApp::run(std::ostream& out) {
         out << usage();
         return 0;
     }
+    if (!octomap_path.empty() && !octomap_writer)
+        throw std::logic_error("simp-export-map: this program was built without the OctoMap exporter");
     const World w = loadWorld(world_dir);
-    exportSimpMap(w, out_dir);
-    out << "Exported " << w.objects.objects.size() << " objects\n"
-        << describeObjectCounts(w.objects) << "to the authors' format in " << out_dir << "\n";
+    if (!out_dir.empty()) {
+        exportSimpMap(w, out_dir);
+        out << "Exported " << w.objects.objects.size() << " objects\n"
+            << describeObjectCounts(w.objects) << "to the authors' format in " << out_dir << "\n";
+    }
+    if (!gridmap_path.empty()) {
+        saveGridmap(w.floorplan, gridmap_path);
+        const auto& g = w.floorplan;
+        out << "Wrote the floor plan (" << g.getSizeX() << " x " << g.getSizeY() << " cells at " << g.getResolution()
+            << " m, x " << g.getXMin() << " .. " << g.getXMax() << " m, y " << g.getYMin() << " .. " << g.getYMax()
+            << " m) as MRPT .gridmap " << gridmap_path << "\n";
+        if (const double shift = gridmapOriginShift(g); shift > 1e-6)
+            out << "Note: MRPT reads this grid with its origin rounded to a multiple of " << g.getResolution()
+                << " m: the floor plan moves by " << shift << " m (COccupancyGridMap2D::setSize, doc/plugin.md)\n";
+    }
+    if (!octomap_path.empty()) out << octomap_writer(w, config_ini, resolution, octomap_path);
     return 0;
 }
 

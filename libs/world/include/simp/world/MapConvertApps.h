@@ -5,6 +5,7 @@
 
 #include <simp/world/SimpFormat.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 
@@ -27,7 +28,8 @@ class ImportMapApp {
     bool help_ = false;
 };
 
-/// simp-export-map --world W --out D
+/// simp-export-map --world W [--out D] [--gridmap F.gridmap] [--octomap F.bt|F.ot [--resolution M] [--config INI]]
+/// (at least one of --out, --gridmap, --octomap).
 class ExportMapApp {
    public:
     void initialize(int argc, const char* const* argv);
@@ -35,7 +37,14 @@ class ExportMapApp {
     bool helpRequested() const { return help_; }
     static std::string usage();
 
-    std::string world_dir, out_dir;
+    std::string world_dir, out_dir, gridmap_path, octomap_path, config_ini, resolution;
+
+    /// Writes the OctoMap (libs/export3d, which this library cannot depend on: the object colours come
+    /// from libs/maps): world, .ini path (may be empty), --resolution text (may be empty), output
+    /// path; returns the summary lines to print. simp-export-map's main() sets it; --octomap without
+    /// it is an error.
+    std::function<std::string(const World&, const std::string&, const std::string&, const std::string&)>
+        octomap_writer;
 
    private:
     bool help_ = false;
