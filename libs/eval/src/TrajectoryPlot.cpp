@@ -114,8 +114,7 @@ cv::Mat3b drawTrajectoryMap(const MapLayers& l) {
         legend.emplace_back("kidnap: lifted here", kLifted);
         legend.emplace_back("kidnap: put down here", kPutDown);
     }
-    legend.emplace_back(l.estimate.empty() ? "estimate (none reported)" : "estimate (o = start)",
-                        kEstAfter);
+    if (!l.estimate.empty()) legend.emplace_back("estimate (o = start)", kEstAfter);
     if (!l.particles.empty()) legend.emplace_back("final particles", kParticles);
     if (l.objects)
         for (auto& item : classLegend(*l.objects, present)) legend.push_back(std::move(item));

@@ -24,8 +24,8 @@ cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& ground_trut
 
 /// A run over the floor plan, without metrics: object footprints in their class colour, the
 /// final particles (blue dots), the ground truth (green) when given, the estimate (red; start
-/// o, end with its heading), a scale bar on the map and a legend (layers, then the classes
-/// present) in a side panel.
+/// o, end with its heading), a scale bar on the map and a legend (the layers drawn, then the
+/// classes present) in a side panel.
 cv::Mat3b drawTrajectoryMap(const MapLayers& layers);
 
 /// The error-over-time panel alone (width x height px).
