@@ -108,3 +108,62 @@ TEST(Plots, UnwritablePathThrowsNamingIt) {
         EXPECT_NE(std::string(e.what()).find("x.notanimage"), std::string::npos) << e.what();
     }
 }
+
+TEST(Plots, ScaleBarIsARoundLengthNearAFifthOfTheMap) {
+    EXPECT_DOUBLE_EQ(scaleBarLength(10.0), 2.0);
+    EXPECT_DOUBLE_EQ(scaleBarLength(26.0), 5.0);
+    EXPECT_DOUBLE_EQ(scaleBarLength(60.0), 10.0);
+    EXPECT_DOUBLE_EQ(scaleBarLength(3.0), 0.5);
+    EXPECT_DOUBLE_EQ(scaleBarLength(0.2), 0.1);  // never below 0.1 m
+}
+
+TEST(Plots, MapFigureKeepsTheLegendBesideTheMapAndCarriesAScaleBar) {
+    auto w = smallWorld();
+    // 14 classes present: the legend needs more rows (14 x 24 px) than the 240 px map has
+    w.objects.class_names.clear();
+    w.objects.objects.clear();
+    for (int k = 0; k < 14; ++k) {
+        w.objects.class_names.push_back("class" + std::to_string(k));
+        simp::world::MapObject o;
+        o.id = k;
+        o.class_id = k;
+        o.box = simp::geometry::makeUprightBox({3.0 + 0.45 * k, 2.5, 0.4}, {0.3, 0.3, 0.8}, 0);
+        w.objects.objects.push_back(o);
+    }
+    w.objects.class_noise.resize(14);
+    const cv::Mat3b fig = drawObjectMap(w);
+    const int map_w = 400, map_h = 240;  // 200 x 120 cells, 2 px each
+    ASSERT_GT(fig.rows, map_h);          // grew for the legend
+    const cv::Mat3b map_area = fig(cv::Rect(0, 0, map_w, map_h)), side = fig(cv::Rect(map_w, 0, fig.cols - map_w, fig.rows));
+    for (int k = 0; k < 14; ++k) EXPECT_GE(countColor(side, classColor(k)), 22 * 14) << "legend swatch of class " << k;
+    // nothing of the legend on the map: its top-left corner (free floor) stays white
+    EXPECT_EQ(countColor(map_area(cv::Rect(0, 0, 120, 30)), cv::Scalar(255, 255, 255)), 120 * 30);
+    // the scale bar (black) in the bottom-left corner of the free floor: 2 m for a 10 m wide map
+    const int black = countColor(map_area(cv::Rect(0, map_h - 40, 160, 40)), cv::Scalar(0, 0, 0));
+    EXPECT_GE(black, 2 * 40 * 3) << "a 2 m bar at 40 px/m, 3 px thick";
+    writePng((fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "map_14_classes.png").string(), fig);
+}
+
+TEST(Plots, TrajectoryMapShowsGroundTruthWhenGivenEstimateParticlesAndALegend) {
+    const auto w = smallWorld();
+    MapLayers layers;
+    layers.floorplan = &w.floorplan;
+    layers.objects = &w.objects;
+    for (int k = 0; k <= 20; ++k) {
+        layers.ground_truth.push_back({0.5 * k, {1.0 + 0.4 * k, 1.0, 0.0}});
+        layers.estimate.push_back({0.5 * k, {1.0 + 0.4 * k, 1.5, 0.0}});
+    }
+    for (int k = 0; k < 50; ++k) layers.particles.push_back({8.5 + 0.01 * k, 4.0, 0.0});
+    const cv::Scalar gt(40, 160, 40), est(30, 30, 220), particles(200, 80, 0);
+    const cv::Mat3b fig = drawTrajectoryMap(layers);
+    const cv::Mat3b map_area = fig(cv::Rect(0, 0, 400, 240)), side = fig(cv::Rect(400, 0, fig.cols - 400, fig.rows));
+    EXPECT_GT(countColor(map_area, gt), 100);
+    EXPECT_GT(countColor(map_area, est), 100);
+    EXPECT_GT(countColor(map_area, particles), 20);
+    for (const auto& c : {gt, est, particles, classColor(0), classColor(1)})
+        EXPECT_GE(countColor(side, c), 22 * 14) << "legend swatch " << c;
+    writePng((fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "trajectory_map.png").string(), fig);
+
+    layers.ground_truth.clear();  // no ground truth: neither drawn nor in the legend
+    EXPECT_EQ(countColor(drawTrajectoryMap(layers), gt), 0);
+}

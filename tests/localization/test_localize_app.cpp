@@ -3,7 +3,13 @@
 #include "TestUtil.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/opengl/CPointCloud.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <opencv2/imgcodecs.hpp>
+#include <simp/eval/Scene3D.h>
 #include <simp/io/Tum.h>
+#include <simp/world/World.h>
 
 #include <cmath>
 #include <filesystem>
@@ -119,6 +125,49 @@ TEST(LocalizeApp, SimpConvergesGloballyAndStaysConverged) {
     EXPECT_GT(fs::file_size(out + "/trajectory.png"), 1000u);
     // A converged set is concentrated: its spread is well below the room size.
     EXPECT_LT(std::sqrt(last.cov(0, 0) + last.cov(1, 1)), 0.5);
+}
+
+TEST(LocalizeApp, GroundTruthAndThreeDSceneShowTheRun) {
+    const Scenario& sc = sharedScenario();
+    const std::string out = freshOutputDir("scene3d");
+    auto args = baseArgs(sc, out);
+    setArg(args, "--particles", "500");
+    setArg(args, "--gt", sc.groundtruth_path);
+    setArg(args, "--3dscene", out + "/run.3Dscene");
+    LocalizeApp app;
+    runApp(app, args);
+
+    const auto scene = simp::eval::loadScene(out + "/run.3Dscene");
+    EXPECT_TRUE(scene->getByName(simp::eval::scene_names::kFloorplan));
+    const auto objects =
+        std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(scene->getByName(simp::eval::scene_names::kObjects));
+    ASSERT_TRUE(objects);
+    EXPECT_EQ(objects->size(), 2 * simp::world::loadWorld(sc.world_dir).objects.objects.size());  // box + label each
+    const auto lines = [&](const char* name) {
+        const auto l = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(scene->getByName(name));
+        return l ? l->getLineCount() + 1 : 0;
+    };
+    EXPECT_EQ(lines(simp::eval::scene_names::kGroundTruth), sc.groundtruth.size());
+    EXPECT_EQ(lines(simp::eval::scene_names::kEstimate), app.estimate.size());
+    const auto cloud =
+        std::dynamic_pointer_cast<mrpt::opengl::CPointCloud>(scene->getByName(simp::eval::scene_names::kParticles));
+    ASSERT_TRUE(cloud);
+    EXPECT_EQ(cloud->size(), app.final_particles.size());
+
+    // trajectory.png draws the ground truth (green of the figures, simp::eval::drawTrajectoryMap)
+    const cv::Mat3b png = cv::imread(out + "/trajectory.png");
+    ASSERT_FALSE(png.empty());
+    int green = 0;
+    for (int r = 0; r < png.rows; ++r)
+        for (int c = 0; c < png.cols; ++c) green += png(r, c) == cv::Vec3b(40, 160, 40);
+    EXPECT_GT(green, 200);
+
+    setArg(args, "--gt", out + "/absent.tum");
+    args.insert(args.begin(), "simp-localize");
+    LocalizeApp refused;
+    const std::string error = errorOf([&] { refused.initialize(args); });
+    EXPECT_NE(error.find("--gt"), std::string::npos) << error;
+    EXPECT_NE(error.find("absent.tum"), std::string::npos) << error;
 }
 
 TEST(LocalizeApp, BaselinesRunEndToEnd) {

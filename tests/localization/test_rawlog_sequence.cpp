@@ -9,8 +9,11 @@
 #include <simp/localization/RawlogSequence.h>
 #include <simp/obs/CObservationObjects3D.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sys/wait.h>
 
 using namespace simp::localization;
 
@@ -68,4 +71,53 @@ TEST(RawlogSequence, ErrorsNameTheFile) {
         mrpt::serialization::archiveFrom(f) << c;
     }
     EXPECT_EQ(loadRawlogSequence(dir + "/comments.rawlog").frames.size(), 1u);  // a frame without detections
+}
+
+namespace {
+
+/// Runs MRPT's rawlog-edit with the plugin; returns its exit status (output in `log`).
+int rawlogEdit(const std::string& args, std::string& log) {
+    const std::string cmd = "rawlog-edit -w --plugins " + std::string(SIMP_BINARY_DIR) + "/lib/libsimp_obs.so " + args +
+                            " 2>&1";
+    log.clear();
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return -1;
+    char buf[4096];
+    while (std::fgets(buf, sizeof buf, p)) log += buf;
+    const int status = pclose(p);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST(RawlogSequence, TimeStampsGoingBackwardsAreRefusedNamingTheEntry) {
+    if (std::system("command -v rawlog-edit > /dev/null") != 0)
+        GTEST_SKIP() << "rawlog-edit (Debian package mrpt-apps) is not installed";
+    const auto& sc = test::sharedScenario();
+    const std::string dir = test::freshOutputDir("remapped_timestamps");
+    std::filesystem::create_directories(dir);
+    std::string log;
+
+    // t -> t + 100: MRPT shifts the observations (not the actions); frames take their
+    // observations' times, so the sequence is read, shifted, in order.
+    const std::string shifted = dir + "/shifted.rawlog";
+    ASSERT_EQ(rawlogEdit("--remap-timestamps \"1;100\" -i " + sc.rawlog_path + " -o " + shifted, log), 0) << log;
+    const auto seq = loadRawlogSequence(shifted);
+    ASSERT_EQ(seq.frames.size(), sc.groundtruth.size());
+    for (std::size_t i = 0; i < seq.frames.size(); ++i)
+        EXPECT_NEAR(seq.frames[i].t_s, sc.groundtruth[i].t_s + 100.0, 1e-5);
+
+    // t -> -t: the frames' times go backwards: refused, naming the file, the entry and both times.
+    const std::string reversed = dir + "/reversed.rawlog";
+    ASSERT_EQ(rawlogEdit("--remap-timestamps \"-1;0\" -i " + sc.rawlog_path + " -o " + reversed, log), 0) << log;
+    try {
+        loadRawlogSequence(reversed);
+        FAIL() << "a rawlog whose time goes backwards was accepted";
+    } catch (const std::runtime_error& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("reversed.rawlog"), std::string::npos) << m;
+        EXPECT_NE(m.find("entry 3 (frame 1)"), std::string::npos) << m;  // entries: action, frame, action, frame
+        EXPECT_NE(m.find("is not after the previous frame's"), std::string::npos) << m;
+        EXPECT_NE(m.find("(entry 1)"), std::string::npos) << m;
+    }
 }

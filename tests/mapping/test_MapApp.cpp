@@ -1,4 +1,7 @@
 #include <gtest/gtest.h>
+#include <mrpt/opengl/CSetOfLines.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <simp/eval/Scene3D.h>
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -99,8 +102,10 @@ TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
     const std::string dir = writeInputs("end_to_end");
     const std::string test_ini = dir + "/test.ini";
     const std::string out = dir + "/M";
+    const std::string scene = dir + "/map.3Dscene";
     const std::vector<std::string> args = {"simp-map", "--world", dir + "/W", "--rawlog", dir + "/Q/sequence.rawlog",
-                                           "--poses", dir + "/Q/groundtruth.tum", "--out", out, "--config", test_ini};
+                                           "--poses", dir + "/Q/groundtruth.tum", "--out", out, "--config", test_ini,
+                                           "--3dscene", scene};
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
     MapApp app;
@@ -111,6 +116,21 @@ TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
     EXPECT_EQ(app.framesMapped(), 80u);
     EXPECT_NE(log.str().find("objects written"), std::string::npos);
     checkOutput(out);
+
+    // --3dscene: the floor plan, a labelled box per built object, the poses file as ground truth.
+    const auto loaded = simp::eval::loadScene(scene);
+    EXPECT_TRUE(loaded->getByName(simp::eval::scene_names::kFloorplan));
+    const auto objects = std::dynamic_pointer_cast<mrpt::opengl::CSetOfObjects>(
+        loaded->getByName(simp::eval::scene_names::kObjects));
+    ASSERT_TRUE(objects);
+    const auto built = simp::world::loadWorld(out).objects.objects.size();
+    ASSERT_GT(built, 0u);
+    EXPECT_EQ(objects->size(), 2 * built);  // a CBox and a CText each
+    const auto gt = std::dynamic_pointer_cast<mrpt::opengl::CSetOfLines>(
+        loaded->getByName(simp::eval::scene_names::kGroundTruth));
+    ASSERT_TRUE(gt);
+    EXPECT_EQ(gt->getLineCount() + 1, simp::io::readTum(dir + "/Q/groundtruth.tum").size());
+    EXPECT_FALSE(loaded->getByName(simp::eval::scene_names::kParticles));
 }
 
 TEST(MapApp, OdometryOnlyUsesTheRawlogOdometry) {

@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
 #include <mrpt/io/CMemoryStream.h>
+#include <mrpt/opengl/CBox.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/opengl/CText.h>
 #include <mrpt/serialization/CArchive.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/ObjectClasses.h>
@@ -173,34 +176,92 @@ TEST(CObservationObjects3D, UnknownVersionThrows) {
     EXPECT_ANY_THROW(arch.ReadObject());
 }
 
-TEST(CObservationObjects3D, DescriptionTextListsEveryDetectionWithUnits) {
+/// Whitespace-separated tokens of a line.
+std::vector<std::string> tokens(const std::string& line) {
+    std::istringstream s(line);
+    std::vector<std::string> t;
+    for (std::string x; s >> x;) t.push_back(x);
+    return t;
+}
+
+TEST(CObservationObjects3D, DescriptionTextIsATableWithClassNamesAndUnits) {
     const auto o = makeObservation();
     std::ostringstream s;
     o->getDescriptionAsText(s);
     const auto text = s.str();
     EXPECT_THAT(text, HasSubstr("Detections: 2"));
-    EXPECT_THAT(text, HasSubstr("#0 class=4 'table' conf=0.800"));
-    EXPECT_THAT(text, HasSubstr("#1 class=9 'cabinet'"));
-    EXPECT_THAT(text, HasSubstr("centre=(0.500, 0.200, 3.000) m"));
-    EXPECT_THAT(text, HasSubstr("size WxHxL=0.600 x 0.900 x 1.200 m"));
-    EXPECT_THAT(text, HasSubstr("box2D=[10.000, 20.000, 110.000, 220.000] px"));
-    EXPECT_THAT(text, HasSubstr("id=42"));
     EXPECT_THAT(text, HasSubstr("fx=380.07"));
     EXPECT_THAT(text, HasSubstr("CAMERA_1"));  // base class part
+    // The table: a header line with the column names, then one line per detection, each with
+    // exactly the header's number of columns.
+    std::istringstream lines(text);
+    std::vector<std::vector<std::string>> table;
+    for (std::string line; std::getline(lines, line);) {
+        const auto t = tokens(line);
+        if (!table.empty() || (!t.empty() && t[0] == "detection")) table.push_back(t);
+    }
+    const auto& names = CObservationObjects3D::detectionColumnNames();
+    ASSERT_EQ(table.size(), 3u) << text;
+    EXPECT_EQ(table[0], names);
+    for (const auto& row : table) ASSERT_EQ(row.size(), names.size()) << text;
+    EXPECT_EQ(table[1][1], "4");
+    EXPECT_EQ(table[1][2], "table");
+    EXPECT_EQ(table[1][3], "0.8");
+    EXPECT_EQ(table[1][4], "0.5");    // cx (m)
+    EXPECT_EQ(table[1][8], "0.9");    // H (m)
+    EXPECT_EQ(table[1][14], "10");    // x_min (px)
+    EXPECT_EQ(table[1][18], "42");    // detector_id
+    EXPECT_EQ(table[2][2], "cabinet");
+    EXPECT_EQ(table[2][14], "nan");   // no 2D box
+    EXPECT_EQ(table[2][18], "-1");    // no detector id
 }
 
-TEST(CObservationObjects3D, ExportTxtRowHasFixedColumnsPerDetection) {
-    const auto o = makeObservation();
+TEST(CObservationObjects3D, ExportTxtWritesOneRowPerDetectionWithFixedColumns) {
+    auto o = makeObservation();
     ASSERT_TRUE(o->exportTxtSupported());
-    std::istringstream row(o->exportTxtDataRow());
-    std::vector<double> v;
-    double x;
-    while (row >> x) v.push_back(x);
-    ASSERT_EQ(v.size(), 7u + 2u * 12u);
-    EXPECT_EQ(v[6], 2.0);         // num_detections
-    EXPECT_EQ(v[7], 4.0);         // class of detection 0
-    EXPECT_NEAR(v[9], 0.5, 1e-9);  // cx of detection 0
-    EXPECT_EQ(v[7 + 12], 9.0);    // class of detection 1
+    const std::size_t columns = 7 + CObservationObjects3D::detectionColumnNames().size();  // without rawlog-edit's time
+    EXPECT_EQ(tokens(o->exportTxtHeader()).size(), columns);
+    // rawlog-edit writes "%16.6f " before the row: the rows after the first carry that time themselves.
+    std::istringstream rows(o->exportTxtDataRow());
+    std::vector<std::vector<std::string>> table;
+    for (std::string line; std::getline(rows, line);) table.push_back(tokens(line));
+    ASSERT_EQ(table.size(), 2u);
+    EXPECT_EQ(table[0].size(), columns);
+    ASSERT_EQ(table[1].size(), columns + 1);
+    EXPECT_NEAR(std::stod(table[1][0]), mrpt::Clock::toDouble(o->timestamp), 1e-6);
+    EXPECT_EQ(table[0][6], "2");  // num_detections
+    EXPECT_EQ(table[0][9], "table");
+    EXPECT_EQ(table[1][1 + 9], "cabinet");
+    EXPECT_NEAR(std::stod(table[0][11]), 0.5, 1e-9);  // cx of detection 0
+
+    // A multi-word class name stays one column; no detections: one placeholder row.
+    auto names = o->classNames();
+    names[9] = "filing cabinet";
+    o->setClassNames(names);
+    EXPECT_THAT(o->exportTxtDataRow(), HasSubstr(" filing_cabinet "));
+    o->setDetections({});
+    const auto empty = tokens(o->exportTxtDataRow());
+    ASSERT_EQ(empty.size(), columns);
+    EXPECT_EQ(empty[6], "0");
+    EXPECT_EQ(empty[7], "-1");
+}
+
+TEST(CObservationObjects3D, IsVisualizableForRawLogViewersThreeDView) {
+    // RawLogViewer 2.5.8 draws any selected object that is an mrpt::opengl::Visualizable.
+    const mrpt::serialization::CSerializable::Ptr obj = makeObservation();
+    const auto viz = std::dynamic_pointer_cast<mrpt::opengl::Visualizable>(obj);
+    ASSERT_TRUE(viz);
+    const auto set = viz->getVisualization();
+    std::size_t boxes = 0, texts = 0;
+    for (const auto& child : *set) {
+        boxes += std::dynamic_pointer_cast<mrpt::opengl::CBox>(child) != nullptr;
+        if (const auto t = std::dynamic_pointer_cast<mrpt::opengl::CText>(child)) {
+            ++texts;
+            EXPECT_THAT(t->getString(), ::testing::AnyOf(HasSubstr("table 0.80"), HasSubstr("cabinet")));
+        }
+    }
+    EXPECT_EQ(boxes, 2u);
+    EXPECT_EQ(texts, 2u);
 }
 
 // ---------------------------------------------------------------- bad input

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <gmock/gmock.h>
 #include <simp/obs/ExampleRawlog.h>
+#include <simp/obs/ObjectClasses.h>
 #include <simp/obs/RawlogReader.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -64,28 +66,42 @@ TEST(RawlogEditPlugin, WithoutThePluginTheObservationsAreUnknown) {
     EXPECT_THAT(out, ::testing::Not(HasSubstr("CAMERA_0")));
 }
 
-TEST(RawlogEditPlugin, ExportTxtWritesOneRowPerObservation) {
+TEST(RawlogEditPlugin, ExportTxtWritesOneRowPerDetectionWithFixedColumns) {
     if (!haveRawlogEdit()) GTEST_SKIP() << "rawlog-edit (Debian package mrpt-apps) is not installed";
     const auto rawlog = makeRawlog("export.rawlog", 6);
     std::string out;
     ASSERT_EQ(run("cd " + outDir() + " && rawlog-edit --plugins " + plugin() + " --export-txt -i export.rawlog", out),
               0)
         << out;
-    std::ifstream f(outDir() + "/export_CAMERA_2.txt");
-    ASSERT_TRUE(f) << out;
-    std::string line;
-    std::size_t rows = 0;
-    while (std::getline(f, line)) {
-        if (line.empty() || line[0] == '%') continue;
-        std::istringstream s(line);
-        std::vector<double> v;
-        double x;
-        while (s >> x) v.push_back(x);
-        ASSERT_EQ(v.size(), 1u + 7u + 3u * 12u) << line;  // time, camera block, 3 detections
-        EXPECT_EQ(v[7], 3.0);                              // num_detections
-        ++rows;
+    const auto names = simp::obs::defaultClassNames();
+    std::size_t files = 0;
+    for (int cam = 0; cam < 4; ++cam) {
+        std::ifstream f(outDir() + "/export_CAMERA_" + std::to_string(cam) + ".txt");
+        ASSERT_TRUE(f) << out;
+        ++files;
+        std::string line;
+        std::size_t rows = 0, header_columns = 0;
+        while (std::getline(f, line)) {
+            std::istringstream s(line);
+            std::vector<std::string> t;
+            for (std::string x; s >> x;) t.push_back(x);
+            if (line[0] == '%') {  // "% Time <exportTxtHeader()>": the column names
+                header_columns = t.size() - 1;
+                continue;
+            }
+            // time, camera pose (6), num_detections, then one detection's 19 columns
+            ASSERT_EQ(t.size(), 1u + 7u + 19u) << line;
+            ASSERT_EQ(t.size(), header_columns) << line;
+            const int class_id = std::stoi(t[9]);
+            ASSERT_GE(class_id, 0);
+            std::string name = names.at(static_cast<std::size_t>(class_id));
+            std::replace(name.begin(), name.end(), ' ', '_');
+            EXPECT_EQ(t[10], name) << line;
+            ++rows;
+        }
+        EXPECT_EQ(rows, 6u * 3u) << "CAMERA_" << cam;  // 6 frames x 3 detections per camera
     }
-    EXPECT_EQ(rows, 6u);
+    EXPECT_EQ(files, 4u);
 }
 
 TEST(RawlogEditPlugin, CutAndRemoveLabelKeepObservationsIntact) {

@@ -206,6 +206,11 @@ void DemoApp::run(std::ostream& out) {
         const auto gt = io::readTum(seq + "/groundtruth.tum");
         const auto est = io::readTum(est_dir + "/estimate.tum");
         const eval::TrajMetricsParams params;
+        if (est.empty()) {  // never localized: a failed run, nothing to measure
+            r.duration_s = gt.empty() ? 0.0 : gt.back().t_s - gt.front().t_s;
+            runs.push_back(r);
+            continue;
+        }
         const auto m = eval::evaluateTrajectory(gt, est, params);
         r.success = m.success;
         r.converged = m.converged;
@@ -231,22 +236,25 @@ void DemoApp::run(std::ostream& out) {
 }
 
 std::string resultsTable(const std::vector<DemoRun>& runs) {
+    // A failed run has no convergence time and no ATE to report: a transient convergence
+    // before a divergence, or an error measured after it, would read as a result.
     std::ostringstream s;
     s << std::fixed;
     s << "| run | changed objects | success | convergence time (s) | ATE (m) | ATE (rad) | duration (s) |\n";
     s << "|---|---|---|---|---|---|---|\n";
+    const auto cell = [&](double v, int decimals) {
+        std::ostringstream c;
+        c << std::fixed << std::setprecision(decimals) << v;
+        return c.str();
+    };
     for (const auto& r : runs) {
+        const bool ok = r.success;
         s << "| " << r.name << " | " << std::setprecision(0) << 100 * r.changes << " % | "
-          << (r.success ? "yes" : "no") << " | ";
-        if (r.convergence_time_s >= 0) s << std::setprecision(1) << r.convergence_time_s;
-        else s << "-";
-        s << " | ";
-        if (r.ate_trans_m >= 0) s << std::setprecision(3) << r.ate_trans_m;
-        else s << "-";
-        s << " | ";
-        if (r.ate_rot_rad >= 0) s << std::setprecision(3) << r.ate_rot_rad;
-        else s << "-";
-        s << " | " << std::setprecision(1) << r.duration_s << " |\n";
+          << (ok ? "yes" : r.converged ? "failed (diverged)" : "failed (never converged)") << " | "
+          << (ok && r.convergence_time_s >= 0 ? cell(r.convergence_time_s, 1) : "—") << " | "
+          << (ok && r.ate_trans_m >= 0 ? cell(r.ate_trans_m, 3) : "—") << " | "
+          << (ok && r.ate_rot_rad >= 0 ? cell(r.ate_rot_rad, 3) : "—") << " | " << std::setprecision(1) << r.duration_s
+          << " |\n";
     }
     return s.str();
 }

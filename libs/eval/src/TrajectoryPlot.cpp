@@ -2,15 +2,17 @@
 #include <simp/eval/Canvas.h>
 #include <simp/eval/Plots.h>
 #include <simp/eval/Report.h>
+#include <simp/geometry/Footprint.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 
 namespace simp::eval {
 namespace {
 
-const cv::Scalar kGt(40, 160, 40), kEstBefore(0, 165, 255), kEstAfter(30, 30, 220), kConv(200, 90, 0),
+const cv::Scalar kLifted(255, 0, 0), kPutDown(0, 140, 255), kParticles(200, 80, 0), kGt(40, 160, 40), kEstBefore(0, 165, 255), kEstAfter(30, 30, 220), kConv(200, 90, 0),
     kBlack(0, 0, 0), kGrid(215, 215, 215);
 
 /// One error panel: values over time, a dashed bound, vertical event lines.
@@ -63,6 +65,63 @@ cv::Mat3b drawErrorPlot(const TrajMetrics& m, const TrajMetricsParams& p, int wi
     return img;
 }
 
+cv::Mat3b drawTrajectoryMap(const MapLayers& l) {
+    double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+    const auto extend = [&](double x, double y) {
+        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+    };
+    for (const auto* traj : {&l.ground_truth, &l.estimate})
+        for (const auto& s : *traj) extend(s.pose.x, s.pose.y);
+    for (const auto& p : l.particles) extend(p.x, p.y);
+    if (l.objects)
+        for (const auto& o : l.objects->objects) extend(o.box.center.x(), o.box.center.y());
+    if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
+    Canvas c = makeCanvasFor(l.floorplan, x0, y0, x1, y1);
+
+    std::set<int> present;
+    if (l.objects)
+        for (const auto& o : l.objects->objects) {
+            drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id), 1, 0.25);
+            present.insert(o.class_id);
+        }
+    for (const auto& p : l.particles) cv::circle(c.image, c.toPixel(p.x, p.y), 1, kParticles, cv::FILLED);
+    const auto polyline = [&](const std::vector<io::StampedPose2D>& traj, const cv::Scalar& colour, std::size_t jump) {
+        std::vector<cv::Point> pts;
+        for (const auto& s : traj) pts.push_back(c.toPixel(s.pose.x, s.pose.y));
+        for (std::size_t k = 1; k < pts.size(); ++k)
+            if (k != jump) cv::line(c.image, pts[k - 1], pts[k], colour, 2, cv::LINE_AA);
+        if (!pts.empty()) cv::circle(c.image, pts.front(), 6, colour, 2, cv::LINE_AA);
+    };
+    polyline(l.ground_truth, kGt, l.ground_truth_jump);
+    polyline(l.estimate, kEstAfter, 0);
+    const bool kidnap = l.ground_truth_jump > 0 && l.ground_truth_jump < l.ground_truth.size();
+    if (kidnap) {
+        const auto& from = l.ground_truth[l.ground_truth_jump - 1].pose;
+        const auto& to = l.ground_truth[l.ground_truth_jump].pose;
+        cv::circle(c.image, c.toPixel(from.x, from.y), 8, kLifted, 2, cv::LINE_AA);
+        cv::circle(c.image, c.toPixel(to.x, to.y), 7, kPutDown, cv::FILLED, cv::LINE_AA);
+    }
+    if (!l.estimate.empty()) {  // the final estimate with its heading
+        const auto& b = l.estimate.back().pose;
+        cv::circle(c.image, c.toPixel(b.x, b.y), 4, kEstAfter, cv::FILLED, cv::LINE_AA);
+        cv::line(c.image, c.toPixel(b.x, b.y), c.toPixel(b.x + 0.5 * std::cos(b.phi), b.y + 0.5 * std::sin(b.phi)),
+                 kEstAfter, 2, cv::LINE_AA);
+    }
+    drawScaleBar(c);
+    std::vector<std::pair<std::string, cv::Scalar>> legend;
+    if (!l.ground_truth.empty()) legend.emplace_back("ground truth (o = start)", kGt);
+    if (kidnap) {
+        legend.emplace_back("kidnap: lifted here", kLifted);
+        legend.emplace_back("kidnap: put down here", kPutDown);
+    }
+    if (!l.estimate.empty()) legend.emplace_back("estimate (o = start)", kEstAfter);
+    if (!l.particles.empty()) legend.emplace_back("final particles", kParticles);
+    if (l.objects)
+        for (auto& item : classLegend(*l.objects, present)) legend.push_back(std::move(item));
+    drawLegend(c, legend);
+    return c.image;
+}
+
 cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& gt, const std::vector<io::StampedPose2D>& est,
                                const TrajMetrics& m, const TrajMetricsParams& p, const world::World* world) {
     double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
@@ -86,6 +145,7 @@ cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& gt, const s
     if (after.size() > 1) cv::polylines(c.image, after, false, kEstAfter, 2, cv::LINE_AA);
     if (!gt_px.empty()) cv::circle(c.image, gt_px.front(), 6, kGt, 2, cv::LINE_AA);
     if (!after.empty()) cv::drawMarker(c.image, after.front(), kConv, cv::MARKER_CROSS, 16, 3);
+    drawScaleBar(c);
     drawLegend(c, {{"ground truth (o = start)", kGt},
                    {"estimate before convergence", kEstBefore},
                    {"estimate after convergence", kEstAfter},

@@ -5,8 +5,10 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/random/RandomGenerators.h>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/Plots.h>
+#include <simp/eval/Scene3D.h>
 #include <simp/localization/RawlogSequence.h>
-#include <simp/localization/TrajectoryImage.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
 
@@ -117,6 +119,12 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
         "x,y,phi[,sigma_xy,sigma_phi] (m, rad): track from this pose (default spread 0.2 m, 0.1 rad) instead of "
         "localizing globally",
         false, "", "POSE", cmd);
+    TCLAP::ValueArg<std::string> a_gt("", "gt", "ground truth (TUM, Q/groundtruth.tum): drawn in trajectory.png and the "
+                                      "3D scene", false, "", "TUM", cmd);
+    TCLAP::ValueArg<std::string> a_scene("", "3dscene",
+                                         "also write an MRPT .3Dscene (SceneViewer3D): floor plan, objects, "
+                                         "trajectories, final particles",
+                                         false, "", "F", cmd);
     TCLAP::SwitchArg a_quiet("", "quiet", "no progress or log output on stderr", cmd, false);
     RecordingOutput recorder;
     delete cmd.getOutput();  // TCLAP does not free its default output once another is set
@@ -137,6 +145,10 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     out_dir = a_out.getValue();
     config_path = a_config.getValue();
     show_progress = !a_quiet.getValue();
+    gt_path = a_gt.getValue();
+    scene_path = a_scene.getValue();
+    if (!gt_path.empty() && !fs::is_regular_file(gt_path))
+        throw std::invalid_argument("simp-localize: --gt '" + gt_path + "' does not exist");
 
     loadConfig();
     if (a_method.isSet()) {
@@ -194,6 +206,7 @@ void LocalizeApp::run() {
     // Inputs.
     if (!fs::is_directory(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     world::World world = world::loadWorld(world_dir);
+    const std::vector<io::StampedPose2D> ground_truth = gt_path.empty() ? std::vector<io::StampedPose2D>{} : io::readTum(gt_path);
     const RawlogSequence seq = loadRawlogSequence(rawlog_path, RawlogTail::AllowTruncated);
     truncated_at_entry = seq.truncated_at_entry;
     if (truncated_at_entry > 0 && verbose)
@@ -284,11 +297,7 @@ void LocalizeApp::run() {
     final_particles.clear();
     for (const auto& p : localizer.filter().m_particles) final_particles.push_back(p.d);
     if (experiment.write_particles) writeParticles((o / "final_particles.txt").string(), localizer.filter());
-    if (experiment.write_png) {
-        std::vector<mrpt::math::TPose2D> traj;
-        for (const auto& e : estimate) traj.push_back(e.pose);
-        writeTrajectoryPng((o / "trajectory.png").string(), world.floorplan, world.objects, traj, final_particles);
-    }
+    writePictures(world, ground_truth);
     if (verbose) {
         const auto& last = steps.back();
         out << "simp-localize: final estimate (" << last.estimate.x << ", " << last.estimate.y << ", "
@@ -298,6 +307,19 @@ void LocalizeApp::run() {
             out << "simp-localize: warning: the filter never reached state 'localized': estimate.tum is empty "
                    "([LocalizationExperiment] report_from = start writes every frame)\n";
     }
+}
+
+void LocalizeApp::writePictures(const world::World& world, const std::vector<io::StampedPose2D>& ground_truth) const {
+    if (!options.experiment.write_png && scene_path.empty()) return;
+    eval::MapLayers layers;
+    layers.floorplan = &world.floorplan;
+    layers.objects = &world.objects;
+    layers.ground_truth = ground_truth;
+    layers.estimate = estimate;
+    layers.particles = final_particles;
+    if (options.experiment.write_png)
+        eval::writePng((fs::path(out_dir) / "trajectory.png").string(), eval::drawTrajectoryMap(layers));
+    if (!scene_path.empty()) eval::saveScene(*eval::buildScene(layers), scene_path);
 }
 
 std::array<double, 5> parseInitialPose(const std::string& text) {

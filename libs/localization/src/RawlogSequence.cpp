@@ -9,6 +9,7 @@
 #include <mrpt/system/filesystem.h>
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 
@@ -31,7 +32,7 @@ mrpt::poses::CPose2D incrementOf(const mrpt::obs::CActionCollection& acts) {
 /// Builds frames from entries of either format, in file order.
 class FrameBuilder {
    public:
-    explicit FrameBuilder(RawlogSequence& seq) : m_seq(seq) {}
+    FrameBuilder(RawlogSequence& seq, const std::string& path) : m_seq(seq), m_path(path) {}
 
     void action(const mrpt::obs::CActionCollection& acts) {
         m_seq.format = "actions+sensoryframes";
@@ -52,7 +53,7 @@ class FrameBuilder {
             if ((t = timeOf(o->timestamp))) break;
         }
         if (!t) t = m_action_time;
-        push(sf, t);
+        push(sf, t, m_seq.entries - 1);
         m_action_time.reset();
     }
 
@@ -68,6 +69,7 @@ class FrameBuilder {
         if (!m_pending_sf) {
             m_pending_sf = mrpt::obs::CSensoryFrame::Create();
             m_pending_time = t;
+            m_pending_entry = m_seq.entries - 1;
         }
         m_pending_sf->insert(obs);
     }
@@ -81,12 +83,25 @@ class FrameBuilder {
             if (m_odometry_at_last_frame) m_pending_increment = *m_last_odometry - *m_odometry_at_last_frame;
             m_odometry_at_last_frame = m_last_odometry;
         }
-        push(m_pending_sf, m_pending_time);
+        push(m_pending_sf, m_pending_time, m_pending_entry);
         m_pending_sf.reset();
         m_pending_time.reset();
     }
 
-    void push(const mrpt::obs::CSensoryFrame::Ptr& sf, std::optional<double> t) {
+    /// Appends a frame; `entry` (0-based rawlog entry) names it when its time goes backwards.
+    void push(const mrpt::obs::CSensoryFrame::Ptr& sf, std::optional<double> t, std::size_t entry) {
+        if (t && m_last_time && *t <= *m_last_time) {
+            // The filter's steps, estimate.tum and the metrics need increasing times; MRPT's
+            // `rawlog-edit --remap-timestamps` moves observations but not actions, and a shuffled
+            // or merged rawlog can reorder frames: refuse rather than guess the order.
+            char msg[320];
+            std::snprintf(msg, sizeof(msg),
+                          "entry %zu (frame %zu): time stamp %.6f s is not after the previous frame's %.6f s "
+                          "(entry %zu); frame times must increase",
+                          entry, m_seq.frames.size(), *t, *m_last_time, m_last_entry);
+            throw std::runtime_error("rawlog '" + m_path + "': " + msg);
+        }
+        if (t) m_last_time = t, m_last_entry = entry;
         SequenceFrame f;
         f.t_s = t ? *t : static_cast<double>(m_seq.frames.size());
         f.odometry_increment = m_pending_increment;
@@ -96,10 +111,14 @@ class FrameBuilder {
     }
 
     RawlogSequence& m_seq;
+    std::string m_path;
     mrpt::poses::CPose2D m_pending_increment;
     std::optional<double> m_action_time;
     mrpt::obs::CSensoryFrame::Ptr m_pending_sf;
     std::optional<double> m_pending_time;
+    std::size_t m_pending_entry = 0;
+    std::optional<double> m_last_time;
+    std::size_t m_last_entry = 0;
     std::optional<mrpt::poses::CPose2D> m_last_odometry, m_odometry_at_last_frame;
 };
 
@@ -113,6 +132,16 @@ std::string innermostMessage(const std::exception& e) {
     return m.erase(0, m.find_first_not_of(' '));
 }
 
+void dispatch(FrameBuilder& builder, const mrpt::serialization::CSerializable::Ptr& obj) {
+    if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
+        builder.action(*acts);
+    else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
+        builder.sensoryFrame(sf);
+    else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
+        builder.observation(obs);
+    // other objects (comments, ...) carry nothing the filter uses
+}
+
 }  // namespace
 
 RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
@@ -122,7 +151,7 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     auto arch = mrpt::serialization::archiveFrom(in);
 
     RawlogSequence seq;
-    FrameBuilder builder(seq);
+    FrameBuilder builder(seq, path);
     for (;;) {
         mrpt::serialization::CSerializable::Ptr obj;
         try {
@@ -140,13 +169,7 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
                                      std::to_string(seq.entries) + ": " + innermostMessage(e));
         }
         ++seq.entries;
-        if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
-            builder.action(*acts);
-        else if (auto sf = std::dynamic_pointer_cast<mrpt::obs::CSensoryFrame>(obj))
-            builder.sensoryFrame(sf);
-        else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
-            builder.observation(obs);
-        // other objects (comments, ...) carry nothing the filter uses
+        dispatch(builder, obj);
     }
     builder.finish();
     if (seq.frames.empty()) throw std::runtime_error("rawlog '" + path + "' holds no sensory frame or observation");

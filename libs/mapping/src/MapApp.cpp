@@ -3,7 +3,9 @@
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
-#include <simp/mapping/MapRendering.h>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/Plots.h>
+#include <simp/eval/Scene3D.h>
 #include <simp/obs/RawlogReader.h>
 
 #include <filesystem>
@@ -30,6 +32,9 @@ bool MapApp::initialize(int argc, const char* const* argv) {
                                         "INI", cmd);
     TCLAP::SwitchArg odom("", "odometry-only",
                           "use the rawlog's integrated odometry (from the first TUM pose) instead of the TUM poses", cmd);
+    TCLAP::ValueArg<std::string> scene("", "3dscene",
+                                       "also write an MRPT .3Dscene (SceneViewer3D): floor plan, built objects, poses",
+                                       false, "", "F", cmd);
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--help" || a == "-h" || a == "--version") {
@@ -48,6 +53,7 @@ bool MapApp::initialize(int argc, const char* const* argv) {
     a.out_dir = out.getValue();
     a.config_path = config.getValue();
     a.odometry_only = odom.getValue();
+    a.scene_path = scene.getValue();
     initialize(a);
     return true;
 }
@@ -113,6 +119,7 @@ void MapApp::run() {
         << " poses in '" << m_args.poses_path << "'" << (m_args.odometry_only ? " (odometry only)" : "") << "\n";
 
     mrpt::poses::CPose2D odom_pose(traj.front().pose);
+    std::vector<io::StampedPose2D> odometry_path;  // the poses used with --odometry-only
     m_frames_mapped = m_frames_without_pose = 0;
     std::size_t next_report = 0;
     for (std::size_t f = 0; f < frames.size(); ++f) {
@@ -122,6 +129,7 @@ void MapApp::run() {
         mrpt::math::TPose2D pose2d;
         if (m_args.odometry_only) {
             pose2d = odom_pose.asTPose();
+            odometry_path.push_back({mrpt::Clock::toDouble(fr.timestamp), pose2d});
         } else if (!io::interpolatePose(traj, mrpt::Clock::toDouble(fr.timestamp), pose2d)) {
             ++m_frames_without_pose;
             continue;
@@ -150,7 +158,16 @@ void MapApp::run() {
     result.rooms = m_builder.rooms();
     result.objects = m_builder.confirmedMap();
     world::saveWorld(result, m_args.out_dir);
-    writeObjectMapPng(result.floorplan, result.objects, (fs::path(m_args.out_dir) / "map.png").string());
+    eval::writePng((fs::path(m_args.out_dir) / "map.png").string(), eval::drawObjectMap(result.floorplan, result.objects));
+    if (!m_args.scene_path.empty()) {
+        eval::MapLayers layers;
+        layers.floorplan = &result.floorplan;
+        layers.objects = &result.objects;
+        layers.ground_truth = traj;
+        layers.estimate = odometry_path;
+        eval::saveScene(*eval::buildScene(layers), m_args.scene_path);
+        out << "simp-map: wrote the 3D scene '" << m_args.scene_path << "' (SceneViewer3D)\n";
+    }
 
     const BuilderStats& s = m_builder.stats();
     out << "simp-map: " << s.frames << " camera frames, " << s.detections << " detections (rejected: " << s.rejected_class

@@ -211,53 +211,6 @@ void CObservationObjects3D::serializeFrom(mrpt::serialization::CArchive& in, uin
 }
 
 // ---------------------------------------------------------------- text
-void CObservationObjects3D::getDescriptionAsText(std::ostream& o) const {
-    CObservation::getDescriptionAsText(o);
-    o << "Camera pose on robot (x,y,z [m], yaw,pitch,roll [deg]): " << m_camera_pose.asString() << "\n";
-    o << "Image size: " << m_image_width << " x " << m_image_height << " px\n";
-    if (m_intrinsics)
-        o << "Intrinsics: fx=" << m_intrinsics->fx() << " fy=" << m_intrinsics->fy() << " cx=" << m_intrinsics->cx()
-          << " cy=" << m_intrinsics->cy() << " px\n";
-    else
-        o << "Intrinsics: (not given)\n";
-    o << "Detections: " << m_detections.size() << "  (box in camera frame: x right, y down, z forward)\n";
-    o << std::fixed << std::setprecision(3);
-    for (std::size_t i = 0; i < m_detections.size(); ++i) {
-        const auto& d = m_detections[i];
-        const auto& b = d.box_in_camera;
-        const Eigen::Quaterniond q(b.R);
-        o << " #" << i << " class=" << d.class_id << " '" << m_class_names.at(d.class_id) << "'"
-          << " conf=" << d.confidence << " centre=(" << b.center.x() << ", " << b.center.y() << ", " << b.center.z()
-          << ") m size WxHxL=" << b.size.x() << " x " << b.size.y() << " x " << b.size.z()
-          << " m quat(w,x,y,z)=(" << q.w() << ", " << q.x() << ", " << q.y() << ", " << q.z() << ")";
-        if (d.box_2d)
-            o << " box2D=[" << d.box_2d->x_min << ", " << d.box_2d->y_min << ", " << d.box_2d->x_max << ", "
-              << d.box_2d->y_max << "] px";
-        if (d.detector_id) o << " id=" << *d.detector_id;
-        o << "\n";
-    }
-}
-
-std::string CObservationObjects3D::exportTxtHeader() const {
-    return "cam_x[m] cam_y[m] cam_z[m] cam_yaw[rad] cam_pitch[rad] cam_roll[rad] num_detections "
-           "then per detection: class_id confidence cx[m] cy[m] cz[m] W[m] H[m] L[m] qw qx qy qz";
-}
-
-std::string CObservationObjects3D::exportTxtDataRow() const {
-    std::ostringstream s;
-    s << std::setprecision(9);
-    s << m_camera_pose.x() << " " << m_camera_pose.y() << " " << m_camera_pose.z() << " " << m_camera_pose.yaw()
-      << " " << m_camera_pose.pitch() << " " << m_camera_pose.roll() << " " << m_detections.size();
-    for (const auto& d : m_detections) {
-        const auto& b = d.box_in_camera;
-        const Eigen::Quaterniond q(b.R);
-        s << " " << d.class_id << " " << d.confidence << " " << b.center.x() << " " << b.center.y() << " "
-          << b.center.z() << " " << b.size.x() << " " << b.size.y() << " " << b.size.z() << " " << q.w() << " "
-          << q.x() << " " << q.y() << " " << q.z();
-    }
-    return s.str();
-}
-
 mrpt::poses::CPose3D cameraPoseOnRobot(double x, double y, double z, double yaw_rad, double pitch_down_rad) {
     // Optical frame (x right, y down, z forward) relative to a robot-aligned frame looking forward:
     // columns are the optical axes in robot coordinates.

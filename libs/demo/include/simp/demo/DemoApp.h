@@ -62,7 +62,8 @@ class DemoApp {
     /// @}
 };
 
-/// The result table in Markdown (also written to DIR/results.md).
+/// The result table in Markdown (also written to DIR/results.md). A failed run shows "failed (diverged)"
+/// or "failed (never converged)" and "—" for its convergence time and ATE.
 std::string resultsTable(const std::vector<DemoRun>& runs);
 
 }  // namespace simp::demo

@@ -12,6 +12,7 @@
 #include <simp/localization/ParticleSummary.h>
 #include <simp/localization/StepRecord.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/world/World.h>
 
 #include <array>
 #include <memory>
@@ -27,13 +28,14 @@ class LocalizeApp {
     /// Command line (doc/localization.md):
     ///   simp-localize --world W --rawlog Q/sequence.rawlog --out O [--config INI]
     ///                 [--method simp|edt|d|o] [--particles N] [--seed S]
-    ///                 [--initial-pose x,y,phi[,sigma_xy,sigma_phi]] [--quiet]
+    ///                 [--initial-pose x,y,phi[,sigma_xy,sigma_phi]] [--gt Q/groundtruth.tum]
+    ///                 [--3dscene F] [--quiet]
     /// Reads and validates the .ini. \throw std::invalid_argument on bad arguments or .ini keys.
     void initialize(int argc, const char* const* argv);
     void initialize(const std::vector<std::string>& args);
 
     /// Runs the filter over the whole rawlog and writes O/estimate.tum, O/steps.csv,
-    /// O/final_particles.txt and O/trajectory.png. \throw std::runtime_error naming the file
+    /// O/final_particles.txt, O/trajectory.png (with the ground truth of --gt) and the --3dscene file. \throw std::runtime_error naming the file
     /// on a missing/corrupt input. Does nothing after --help.
     void run();
 
@@ -44,6 +46,8 @@ class LocalizeApp {
     LocalizerOptions options;                ///< everything the .ini sets
     /// --initial-pose: x, y (m), phi (rad), sigma_xy (m), sigma_phi (rad); tracking from it
     std::optional<std::array<double, 5>> initial_pose;
+    std::string gt_path;                     ///< --gt: ground truth (TUM) drawn in the figure and the 3D scene
+    std::string scene_path;                  ///< --3dscene: MRPT .3Dscene to write (empty = none)
     bool show_progress = true;               ///< progress lines on stderr
     std::ostream* log = nullptr;             ///< informative messages (nullptr: std::cerr unless quiet)
     /// What the loader changed so that the .ini's settings work together (reconcilePfOptions);
@@ -63,6 +67,8 @@ class LocalizeApp {
 
    private:
     void loadConfig();
+    /// trajectory.png and the --3dscene file from the results of run().
+    void writePictures(const world::World& world, const std::vector<io::StampedPose2D>& ground_truth) const;
 };
 
 /// The object map's likelihood options of simp-localize without --config: config_ini/simp.ini's

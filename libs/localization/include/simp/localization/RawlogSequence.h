@@ -38,7 +38,9 @@ enum class RawlogTail {
  * The frame time is its first observation's timestamp (else the action's; else the frame
  * index, in seconds).
  * \throw std::runtime_error naming the file when it cannot be opened, is corrupt or truncated
- *        (with the entry index), or holds no frame. With RawlogTail::AllowTruncated, an entry that
+ *        (with the entry index), holds no frame, or when a frame's time is not after the previous
+ *        frame's (naming both entries: e.g. after `rawlog-edit --remap-timestamps`, which moves the
+ *        observations but not the actions). With RawlogTail::AllowTruncated, an entry that
  *        fails to read where the file ends (no byte follows it) only ends the sequence.
  */
 RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail = RawlogTail::Strict);

@@ -2,7 +2,7 @@
 /// \file MapApp.h
 /// The simp-map program as a library class (thin main, testable in-process):
 ///   simp-map --world W --rawlog Q/sequence.rawlog --poses Q/groundtruth.tum --out M
-///            [--config INI] [--odometry-only]
+///            [--config INI] [--odometry-only] [--3dscene F]
 /// reads the floor plan (+ rooms) of W, maps the 3D detections of the rawlog at the poses of
 /// the TUM file (or of the integrated odometry) and writes the world directory M.
 
@@ -21,6 +21,7 @@ struct MapAppArgs {
     std::string out_dir;       ///< M
     std::string config_path;   ///< optional .ini, section [mapping]
     bool odometry_only = false;  ///< poses from the rawlog's odometry, starting at the first TUM pose
+    std::string scene_path;    ///< --3dscene: MRPT .3Dscene of the built map (empty = none)
 };
 
 class MapApp {
@@ -31,7 +32,9 @@ class MapApp {
     /// Same with parsed arguments; loads and validates the configuration.
     /// \throw std::runtime_error / std::invalid_argument naming the missing file or bad key.
     void initialize(const MapAppArgs& args);
-    /// Builds the map and writes M (objects.json, floorplan.yaml/.png, rooms.png, map.png).
+    /// Builds the map and writes M (objects.json, floorplan.yaml/.png, rooms.png, map.png) and the
+    /// --3dscene file (floor plan, built objects, the poses file as ground truth, the odometry path
+    /// with --odometry-only).
     void run();
 
     const ObjectMapBuilder& builder() const { return m_builder; }

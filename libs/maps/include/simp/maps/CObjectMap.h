@@ -135,7 +135,7 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     std::string asString() const override;
     /// @}
 
-    /// RGB colour (0..255) of a class id in the fixed palette used by getVisualizationInto().
+    /// RGB colour (0..255) of a class id: simp::obs::classColorRgb, the palette of every picture.
     static std::array<std::uint8_t, 3> classColor(int class_id);
 
     MAP_DEFINITION_START(CObjectMap)

@@ -4,6 +4,7 @@
 
 #include <mrpt/img/TCamera.h>
 #include <mrpt/obs/CObservation.h>
+#include <mrpt/opengl/Visualizable.h>
 #include <mrpt/poses/CPose3D.h>
 #include <simp/geometry/ConvexPolygon.h>
 #include <simp/obs/Detection3D.h>
@@ -25,8 +26,10 @@ namespace simp::obs {
  * the same mrpt::obs::CSensoryFrame. Detections are validated on every way in
  * (setters and deserialization): invalid ones are rejected with an exception that
  * names the detection index and the field.
+ *
+ * As an mrpt::opengl::Visualizable, RawLogViewer (MRPT >= 2.3) draws it in its 3D view.
  */
-class CObservationObjects3D : public mrpt::obs::CObservation {
+class CObservationObjects3D : public mrpt::obs::CObservation, public mrpt::opengl::Visualizable {
     DEFINE_SERIALIZABLE(CObservationObjects3D, simp::obs)
 
    public:
@@ -79,12 +82,34 @@ class CObservationObjects3D : public mrpt::obs::CObservation {
     /// @{
     void getSensorPose(mrpt::poses::CPose3D& out) const override { out = m_camera_pose; }
     void setSensorPose(const mrpt::poses::CPose3D& p) override { setCameraPose(p); }
+    /// Camera pose, image size, intrinsics, then a table of the detections with the columns of
+    /// detectionColumnNames() (doc/observation.md).
     void getDescriptionAsText(std::ostream& o) const override;
-    /// One row per observation: camera pose, then a fixed block of columns per detection
-    /// (doc/observation.md lists them).
+    /// One row per detection (an observation without detections: one row with detection -1),
+    /// every row `8 + detectionColumnNames().size()` whitespace-separated columns: the time (written
+    /// by rawlog-edit), the camera pose, num_detections, then the detection's columns.
     bool exportTxtSupported() const override { return true; }
     std::string exportTxtHeader() const override;
     std::string exportTxtDataRow() const override;
+    /// @}
+
+    /// @name mrpt::opengl::Visualizable (RawLogViewer's 3D view)
+    /// @{
+    /// In the robot frame: the robot's XYZ axes, the camera's axes at cameraPose(), and per
+    /// detection a wireframe box in its class colour (simp::obs::classColorRgb) with a label
+    /// "<class> <confidence>".
+    void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+    /// @}
+
+    /// @name Text columns of a detection (getDescriptionAsText and --export-txt share them)
+    /// @{
+    /// detection class_id class_name confidence cx cy cz W H L qw qx qy qz x_min y_min x_max
+    /// y_max detector_id. The box is in the camera frame (m); the 2D box (px) is nan and the
+    /// detector id -1 when absent; the class name has its blanks replaced by '_'.
+    static const std::vector<std::string>& detectionColumnNames();
+    /// The values of those columns for detection i (i = -1: the placeholder row of an
+    /// observation without detections: class "-", numbers nan).
+    std::vector<std::string> detectionColumns(long i) const;
     /// @}
 
     /// The version serializeTo() writes; tests and tools may lower it to produce files

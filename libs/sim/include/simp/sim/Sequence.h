@@ -37,10 +37,10 @@ struct SequenceSummary {
 SequenceSummary simulateSequence(const world::World& map_world, const SimParams& params, std::uint64_t seed,
                                  const std::string& out_dir);
 
-/// Draws the world (free white, walls black, unknown grey, object footprints coloured by class,
-/// person-free) and `trajectory` (red, start green) to a PNG. With jump_step > 0 (a kidnap) the
-/// segment into pose jump_step is not drawn; a blue ring marks where the robot was lifted, an
-/// orange dot where it was put down.
+/// Draws the world (floor plan, object footprints coloured by class) and the true `trajectory`
+/// (green, circle at the start) to a PNG with a scale bar and a legend (simp::eval::drawTrajectoryMap).
+/// With jump_step > 0 (a kidnap) the segment into pose jump_step is not drawn; a blue ring marks
+/// where the robot was lifted, an orange dot where it was put down.
 void writeOverviewPng(const world::World& world, const std::vector<io::StampedPose2D>& trajectory,
                       const std::string& png_path, std::size_t jump_step = 0);
 
