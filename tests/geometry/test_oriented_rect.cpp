@@ -55,6 +55,11 @@ void expectAgrees(const OrientedRect& r, const ConvexPolygon& p, const char* wha
     EXPECT_NEAR(intersectionAreaWithAlignedRect(toLocal(reversed(p), r), r.hx, r.hy), generic, kRel * scale)
         << what << " (clockwise)";
     if (const auto q = asRectangle(p)) {
+        OrientedRect local = *q;  // q in r's frame
+        local.center = r.toLocal(q->center);
+        local.c = r.c * q->c + r.s * q->s;
+        local.s = r.c * q->s - r.s * q->c;
+        EXPECT_NEAR(intersectionAreaWithAlignedRect(local, r.hx, r.hy), generic, kRel * scale) << what << " (rectangle)";
         if (separated(r, *q)) {
             EXPECT_LE(generic, kRel * scale) << what << ": separated but overlapping";
         }

@@ -4,6 +4,7 @@
 // non-rectangular (tilted-box) footprints, at random and at hand-picked exact poses.
 #include <gtest/gtest.h>
 #include <simp/geometry/Footprint.h>
+#include <simp/maps/IouScore.h>
 #include <simp/maps/SensorModel.h>
 
 #include "TestMaps.h"
@@ -105,6 +106,25 @@ TEST_P(Rectangles, EqualGenericClippingAtRandomAndExactPoses) {
     }
     EXPECT_GT(compared, 18000u);
     EXPECT_GT(on_object, compared / 4);  // mostly pairs that clip, not the eta floor
+}
+
+TEST(IouScore, EqualsExpWithinAFewUlp) {
+    const IouScore score;
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double worst = 0.0;
+    for (int i = 0; i <= 200000; ++i) {
+        // Random values, the table's knots j/64 and their neighbours, and the ends 0 and 1.
+        double iou = i < 100000 ? u(rng) : (i - 100000) / 1562.5;
+        if (i % 3 == 0) iou = std::nextafter(std::floor(iou * 64) / 64, 2.0);
+        iou = std::clamp(iou, 0.0, 1.0);
+        const double expected = std::exp(iou - 1.0);
+        worst = std::max(worst, std::abs(score(iou) - expected) / expected);
+    }
+    EXPECT_LT(worst, 5e-16);  // ~2 ulp
+    EXPECT_EQ(score(1.0), std::exp(0.0));
+    EXPECT_EQ(score(0.0), std::exp(-1.0));
+    EXPECT_EQ(score(-0.5), std::exp(-1.0));  // clamped like the IoU itself
 }
 
 INSTANTIATE_TEST_SUITE_P(SimpAndO, Rectangles, ::testing::Values(SensorModelType::Simp, SensorModelType::O),

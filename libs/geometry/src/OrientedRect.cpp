@@ -75,6 +75,27 @@ std::optional<OrientedRect> asRectangle(const ConvexPolygon& p, double rel_tol) 
     return r;
 }
 
+namespace {
+
+/// Clips `cur` (bounds x0..x1, y0..y1, overlapping the rectangle) to [-hx, hx] x [-hy, hy]
+/// and returns the area. Only the edges that cut the bounds clip: a pass by an edge the
+/// polygon lies inside of would return it unchanged, so skipping it changes nothing.
+double clipToAlignedRect(ClipBuffer* cur, ClipBuffer* next, double x0, double x1, double y0, double y1, double hx,
+                         double hy) {
+    const auto pass = [&](auto clip) {
+        if (cur->n > ClipBuffer::kCapacity / 2) return;  // unreachable for convex input
+        clip(*cur, *next);
+        std::swap(cur, next);
+    };
+    if (x1 > hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, true>(in, hx, out); });
+    if (cur->n >= 3 && x0 < -hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, false>(in, hx, out); });
+    if (cur->n >= 3 && y1 > hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, true>(in, hy, out); });
+    if (cur->n >= 3 && y0 < -hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, false>(in, hy, out); });
+    return cur->area();
+}
+
+}  // namespace
+
 double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double hy) {
     if (p.n < 3) return 0.0;
     double x0 = p.v[0].x(), x1 = x0, y0 = p.v[0].y(), y1 = y0;
@@ -88,20 +109,31 @@ double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double
     if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
     ClipBuffer buf1, buf2;
     buf1.load(p);
-    ClipBuffer* cur = &buf1;
-    ClipBuffer* next = &buf2;
-    // Only the edges that cut p's bounds clip: a pass by an edge p lies inside of would
-    // return p unchanged, so skipping it changes nothing (and p inside costs no pass).
-    const auto pass = [&](auto clip) {
-        if (cur->n > ClipBuffer::kCapacity / 2) return;  // unreachable for convex input
-        clip(*cur, *next);
-        std::swap(cur, next);
-    };
-    if (x1 > hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, true>(in, hx, out); });
-    if (cur->n >= 3 && x0 < -hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, false>(in, hx, out); });
-    if (cur->n >= 3 && y1 > hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, true>(in, hy, out); });
-    if (cur->n >= 3 && y0 < -hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, false>(in, hy, out); });
-    return cur->area();
+    return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
+}
+
+double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double hy) {
+    // a's half axes; its bounds follow from them without visiting the vertices.
+    const double ux = a.c * a.hx, uy = a.s * a.hx, vx = -a.s * a.hy, vy = a.c * a.hy;
+    const double ex = std::abs(ux) + std::abs(vx), ey = std::abs(uy) + std::abs(vy);
+    const double cx = a.center.x(), cy = a.center.y();
+    const double x0 = cx - ex, x1 = cx + ex, y0 = cy - ey, y1 = cy + ey;
+    // Separating axes: the aligned rectangle's (the bounds), then a's own two.
+    if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
+    const double ac = std::abs(a.c), as = std::abs(a.s);
+    if (std::abs(a.c * cx + a.s * cy) >= a.hx + hx * ac + hy * as) return 0.0;
+    if (std::abs(a.c * cy - a.s * cx) >= a.hy + hx * as + hy * ac) return 0.0;
+    ClipBuffer buf1, buf2;
+    buf1.n = 4;
+    buf1.x[0] = cx - ux - vx;
+    buf1.y[0] = cy - uy - vy;
+    buf1.x[1] = cx + ux - vx;
+    buf1.y[1] = cy + uy - vy;
+    buf1.x[2] = cx + ux + vx;
+    buf1.y[2] = cy + uy + vy;
+    buf1.x[3] = cx - ux + vx;
+    buf1.y[3] = cy - uy + vy;
+    return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
 }
 
 }  // namespace simp::geometry

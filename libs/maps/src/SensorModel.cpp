@@ -18,13 +18,13 @@ inline void transformInto(const geometry::ConvexPolygon& in, double c, double s,
 
 /// IoU (Eq. iouscore) of the detection, the robot at (c, s, tx, ty) and the detection's
 /// centre at wc in the world, with one map footprint. Rectangular map objects (most: upright
-/// boxes) are done in their own frame, where their edges are axis-aligned: a separating-axis
-/// test first (in the global case most pairs whose circles overlap do not intersect), then
+/// boxes) are done in their own frame, where their edges are axis-aligned: separating axes
+/// first (in the global case most pairs whose circles overlap do not intersect), then
 /// clipping by coordinate compares. Other footprints: generic clipping in the world, the
 /// moved footprint kept in `world` for the next object of the same pair (model O).
 template <typename Scratch>
-double pairIou(const PreparedDetection& det, double c, double s, double tx, double ty, const Eigen::Vector2d& wc,
-               const ObjectFootprint& of, Scratch& scratch) {
+inline double pairIou(const PreparedDetection& det, double c, double s, double tx, double ty,
+                      const Eigen::Vector2d& wc, const ObjectFootprint& of, Scratch& scratch) {
     if (det.area_m2 <= 0.0 || of.area_m2 <= 0.0) return 0.0;
     double inter = 0.0;
     if (of.is_rect) {
@@ -34,22 +34,22 @@ double pairIou(const PreparedDetection& det, double c, double s, double tx, doub
         const Eigen::Vector2d lc = r.toLocal(wc);
         if (det.is_rect) {
             // The box centre is the footprint's centre of symmetry (up to rounding).
-            geometry::OrientedRect d = det.rect_robot;
+            geometry::OrientedRect d;
             d.center = lc;
             d.c = rc * det.rect_robot.c - rs * det.rect_robot.s;
             d.s = rs * det.rect_robot.c + rc * det.rect_robot.s;
-            geometry::OrientedRect o;
-            o.hx = r.hx;
-            o.hy = r.hy;
-            if (geometry::separated(o, d)) return 0.0;
+            d.hx = det.rect_robot.hx;
+            d.hy = det.rect_robot.hy;
+            inter = geometry::intersectionAreaWithAlignedRect(d, r.hx, r.hy);
+        } else {
+            geometry::ConvexPolygon& fp = scratch.local;
+            const geometry::ConvexPolygon& off = det.offsets_robot;
+            fp.n = off.n;
+            for (std::size_t i = 0; i < off.n; ++i)
+                fp.v[i] = Eigen::Vector2d(rc * off.v[i].x() - rs * off.v[i].y() + lc.x(),
+                                          rs * off.v[i].x() + rc * off.v[i].y() + lc.y());
+            inter = geometry::intersectionAreaWithAlignedRect(fp, r.hx, r.hy);
         }
-        geometry::ConvexPolygon& fp = scratch.local;
-        const geometry::ConvexPolygon& off = det.offsets_robot;
-        fp.n = off.n;
-        for (std::size_t i = 0; i < off.n; ++i)
-            fp.v[i] = Eigen::Vector2d(rc * off.v[i].x() - rs * off.v[i].y() + lc.x(),
-                                      rs * off.v[i].x() + rc * off.v[i].y() + lc.y());
-        inter = geometry::intersectionAreaWithAlignedRect(fp, r.hx, r.hy);
     } else {
         if (!scratch.world_valid) {
             transformInto(det.footprint_robot, c, s, tx, ty, scratch.world);
@@ -145,7 +145,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
             const Eigen::Vector2d wc(wx, wy);
             if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
                 scratch.world_valid = false;
-                p_g = std::exp(pairIou(det, c, s, tx, ty, wc, of, scratch) - 1.0);
+                p_g = m_iou_score(pairIou(det, c, s, tx, ty, wc, of, scratch));
             }
             return std::log(hit.p * p_g + (1.0 - hit.p) * eta);  // Eq. combined
         }
@@ -160,7 +160,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
             best_iou = std::max(best_iou, pairIou(det, c, s, tx, ty, wc, of, scratch));
         }
         if (best_iou <= 0.0) return m_log_eta;
-        const double p_g = std::exp(best_iou - 1.0);  // Eq. iouscore
+        const double p_g = m_iou_score(best_iou);  // Eq. iouscore
         return std::log(best_iou * p_g + (1.0 - best_iou) * eta);
     } else {
         // EDT-MCL: beam-end model of the centre, mixed with the same floor eta.

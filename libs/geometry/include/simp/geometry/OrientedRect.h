@@ -41,6 +41,11 @@ std::optional<OrientedRect> asRectangle(const ConvexPolygon& p, double rel_tol =
 /// only the rectangle's edges that cut p's bounds. No heap.
 double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double hy);
 
+/// The same for a rectangle `a` given in that frame (the sensor model's common case: an
+/// upright detection box against an upright map box). The four separating axes are tested
+/// first, from a's centre and axes alone, so disjoint pairs cost no vertex.
+double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double hy);
+
 /// True when a separating axis exists (one of the four side normals): the interiors are
 /// disjoint and the IoU is 0. Touching rectangles count as separated. Inline: it runs
 /// per (particle x detection) before any clipping.

@@ -8,6 +8,7 @@
 #include <simp/geometry/ConvexPolygon.h>
 #include <simp/geometry/OrientedRect.h>
 #include <simp/maps/EdtMap.h>
+#include <simp/maps/IouScore.h>
 #include <simp/maps/MapFootprints.h>
 #include <simp/maps/ObjectProbabilityMap.h>
 #include <simp/maps/SensorModelTypes.h>
@@ -81,6 +82,7 @@ class SensorModel {
     std::size_t m_num_usable_objects = 0;
     double m_log_eta = 0;
     double m_exp_minus_1 = 0;
+    IouScore m_iou_score;  ///< Eq. iouscore
     double m_inv_two_sigma2 = 0;
 };
 
