@@ -118,11 +118,12 @@ double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double 
     const double ex = std::abs(ux) + std::abs(vx), ey = std::abs(uy) + std::abs(vy);
     const double cx = a.center.x(), cy = a.center.y();
     const double x0 = cx - ex, x1 = cx + ex, y0 = cy - ey, y1 = cy + ey;
-    // Separating axes: the aligned rectangle's (the bounds), then a's own two.
+    // Separating axes: the aligned rectangle's (the bounds: the cheapest, tried first), then all four.
     if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
-    const double ac = std::abs(a.c), as = std::abs(a.s);
-    if (std::abs(a.c * cx + a.s * cy) >= a.hx + hx * ac + hy * as) return 0.0;
-    if (std::abs(a.c * cy - a.s * cx) >= a.hy + hx * as + hy * ac) return 0.0;
+    OrientedRect aligned;
+    aligned.hx = hx;
+    aligned.hy = hy;
+    if (separated(a, aligned)) return 0.0;
     ClipBuffer buf1, buf2;
     buf1.n = 4;
     buf1.x[0] = cx - ux - vx;
