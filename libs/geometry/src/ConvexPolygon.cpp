@@ -1,5 +1,7 @@
 #include <simp/geometry/ConvexPolygon.h>
 
+#include "ClipBuffer.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,17 +15,7 @@ inline double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Ei
     return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
 }
 
-/// Working polygon of the clipper, structure of arrays, never zero-initialised.
-/// The intersection of a convex n-gon and a convex m-gon has at most n + m <= 32
-/// vertices, and so has every intermediate of Sutherland-Hodgman; a pass at most
-/// doubles the count (rounding on near-degenerate input), so a pass only runs on
-/// <= kCapacity / 2 vertices and never writes out of bounds.
-struct ClipBuffer {
-    static constexpr std::size_t kCapacity = 4 * ConvexPolygon::kMaxVertices;
-    double x[kCapacity];
-    double y[kCapacity];
-    std::size_t n;
-};
+using detail::ClipBuffer;
 
 /// Twice the signed area (> 0 counter-clockwise) of a polygon's vertex loop.
 inline double twiceSignedArea(const ConvexPolygon& p) {
@@ -65,11 +57,7 @@ inline void clipByEdge(const ClipBuffer& in, double ax, double ay, double ex, do
 /// Exact intersection area of a with b; `b_ccw` tells b's vertex order (a's does not matter).
 double clipArea(const ConvexPolygon& a, const ConvexPolygon& b, bool b_ccw) {
     ClipBuffer buf1, buf2;
-    buf1.n = a.n;
-    for (std::size_t i = 0; i < a.n; ++i) {
-        buf1.x[i] = a.v[i].x();
-        buf1.y[i] = a.v[i].y();
-    }
+    buf1.load(a);
     ClipBuffer* cur = &buf1;
     ClipBuffer* next = &buf2;
     for (std::size_t i = 0, j = b.n - 1; i < b.n; j = i++) {
@@ -81,9 +69,7 @@ double clipArea(const ConvexPolygon& a, const ConvexPolygon& b, bool b_ccw) {
         std::swap(cur, next);
         if (cur->n < 3) return 0.0;
     }
-    double twice = 0.0;
-    for (std::size_t i = 0, j = cur->n - 1; i < cur->n; j = i++) twice += cur->x[j] * cur->y[i] - cur->x[i] * cur->y[j];
-    return 0.5 * std::abs(twice);
+    return cur->area();
 }
 
 }  // namespace

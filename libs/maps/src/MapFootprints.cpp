@@ -22,6 +22,10 @@ MapFootprints computeMapFootprints(const world::ObjectMapData& data) {
         for (std::size_t v = 0; v < f.polygon.n; ++v)
             f.circle_radius_m = std::max(f.circle_radius_m, (f.polygon.v[v] - f.circle_center_m).norm());
         f.area_m2 = f.polygon.area();
+        if (const auto r = geometry::asRectangle(f.polygon)) {
+            f.is_rect = true;
+            f.rect = *r;
+        }
         out.class_objects[static_cast<std::size_t>(obj.class_id)].push_back(static_cast<std::int32_t>(i));
     }
     return out;
@@ -29,9 +33,7 @@ MapFootprints computeMapFootprints(const world::ObjectMapData& data) {
 
 double iouWithAreas(const geometry::ConvexPolygon& a, double area_a, const geometry::ConvexPolygon& b, double area_b) {
     if (area_a <= 0.0 || area_b <= 0.0) return 0.0;
-    const double inter = geometry::intersectionArea(a, b);
-    const double uni = area_a + area_b - inter;
-    return uni > 0.0 ? std::clamp(inter / uni, 0.0, 1.0) : 0.0;
+    return iouFromIntersection(geometry::intersectionArea(a, b), area_a, area_b);
 }
 
 }  // namespace simp::maps

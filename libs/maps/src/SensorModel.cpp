@@ -16,6 +16,50 @@ inline void transformInto(const geometry::ConvexPolygon& in, double c, double s,
         out.v[i] = Eigen::Vector2d(c * in.v[i].x() - s * in.v[i].y() + tx, s * in.v[i].x() + c * in.v[i].y() + ty);
 }
 
+/// IoU (Eq. iouscore) of the detection, the robot at (c, s, tx, ty) and the detection's
+/// centre at wc in the world, with one map footprint. Rectangular map objects (most: upright
+/// boxes) are done in their own frame, where their edges are axis-aligned: separating axes
+/// first (in the global case most pairs whose circles overlap do not intersect), then
+/// clipping by coordinate compares. Other footprints: generic clipping in the world, the
+/// moved footprint kept in `world` for the next object of the same pair (model O).
+template <typename Scratch>
+inline double pairIou(const PreparedDetection& det, double c, double s, double tx, double ty,
+                      const Eigen::Vector2d& wc, const ObjectFootprint& of, Scratch& scratch) {
+    if (det.area_m2 <= 0.0 || of.area_m2 <= 0.0) return 0.0;
+    double inter = 0.0;
+    if (of.is_rect) {
+        const geometry::OrientedRect& r = of.rect;
+        // Robot -> object frame: rotation R_o^T R(phi) = (rc, rs); the detection centre R_o^T (wc - c_o).
+        const double rc = r.c * c + r.s * s, rs = r.c * s - r.s * c;
+        const Eigen::Vector2d lc = r.toLocal(wc);
+        if (det.is_rect) {
+            // The box centre is the footprint's centre of symmetry (up to rounding).
+            geometry::OrientedRect d;
+            d.center = lc;
+            d.c = rc * det.rect_robot.c - rs * det.rect_robot.s;
+            d.s = rs * det.rect_robot.c + rc * det.rect_robot.s;
+            d.hx = det.rect_robot.hx;
+            d.hy = det.rect_robot.hy;
+            inter = geometry::intersectionAreaWithAlignedRect(d, r.hx, r.hy);
+        } else {
+            geometry::ConvexPolygon& fp = scratch.local;
+            const geometry::ConvexPolygon& off = det.offsets_robot;
+            fp.n = off.n;
+            for (std::size_t i = 0; i < off.n; ++i)
+                fp.v[i] = Eigen::Vector2d(rc * off.v[i].x() - rs * off.v[i].y() + lc.x(),
+                                          rs * off.v[i].x() + rc * off.v[i].y() + lc.y());
+            inter = geometry::intersectionAreaWithAlignedRect(fp, r.hx, r.hy);
+        }
+    } else {
+        if (!scratch.world_valid) {
+            transformInto(det.footprint_robot, c, s, tx, ty, scratch.world);
+            scratch.world_valid = true;
+        }
+        inter = geometry::intersectionArea(scratch.world, of.polygon);
+    }
+    return iouFromIntersection(inter, det.area_m2, of.area_m2);
+}
+
 bool needsProbabilityMap(SensorModelType t) { return t == SensorModelType::Simp || t == SensorModelType::D; }
 
 void checkParams(const SensorModelParams& p) {
@@ -61,8 +105,15 @@ std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geome
     d.center_robot_m = box_in_robot.center.head<2>();
     d.footprint_robot = footprint_in_robot;
     d.area_m2 = footprint_in_robot.area();
-    for (std::size_t v = 0; v < footprint_in_robot.n; ++v)
-        d.radius_m = std::max(d.radius_m, (footprint_in_robot.v[v] - d.center_robot_m).norm());
+    d.offsets_robot.n = footprint_in_robot.n;
+    for (std::size_t v = 0; v < footprint_in_robot.n; ++v) {
+        d.offsets_robot.v[v] = footprint_in_robot.v[v] - d.center_robot_m;
+        d.radius_m = std::max(d.radius_m, d.offsets_robot.v[v].norm());
+    }
+    if (const auto r = geometry::asRectangle(footprint_in_robot)) {
+        d.is_rect = true;
+        d.rect_robot = *r;
+    }
     if (m_params.noise_reference_range_m > 0.0) {
         const double s = std::max(1.0, d.center_robot_m.norm() / m_params.noise_reference_range_m);
         d.noise_inv_scale2 = 1.0 / (s * s);
@@ -75,7 +126,7 @@ std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geome
 // Per (pose, detection) kernels. The robot pose is (c, s) = (cos phi, sin phi) and t = (tx, ty).
 template <SensorModelType T>
 double SensorModel::kernel(const PreparedDetection& det, double c, double s, double tx, double ty,
-                           geometry::ConvexPolygon& fp) const {
+                           Scratch& scratch) const {
     // Detection centre in the world for this pose.
     const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
     const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
@@ -93,8 +144,8 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
             double p_g = m_exp_minus_1;  // IoU = 0
             const Eigen::Vector2d wc(wx, wy);
             if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
-                transformInto(det.footprint_robot, c, s, tx, ty, fp);
-                p_g = std::exp(iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2) - 1.0);
+                scratch.world_valid = false;
+                p_g = m_iou_score(pairIou(det, c, s, tx, ty, wc, of, scratch));
             }
             return std::log(hit.p * p_g + (1.0 - hit.p) * eta);  // Eq. combined
         }
@@ -102,18 +153,14 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
         // Best overlap with any object of the class; IoU plays the association probability.
         const Eigen::Vector2d wc(wx, wy);
         double best_iou = 0.0;
-        bool transformed = false;
+        scratch.world_valid = false;
         for (const std::int32_t o : m_footprints.class_objects[static_cast<std::size_t>(det.map_class)]) {
             const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(o)];
             if (!circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) continue;
-            if (!transformed) {
-                transformInto(det.footprint_robot, c, s, tx, ty, fp);
-                transformed = true;
-            }
-            best_iou = std::max(best_iou, iouWithAreas(fp, det.area_m2, of.polygon, of.area_m2));
+            best_iou = std::max(best_iou, pairIou(det, c, s, tx, ty, wc, of, scratch));
         }
         if (best_iou <= 0.0) return m_log_eta;
-        const double p_g = std::exp(best_iou - 1.0);  // Eq. iouscore
+        const double p_g = m_iou_score(best_iou);  // Eq. iouscore
         return std::log(best_iou * p_g + (1.0 - best_iou) * eta);
     } else {
         // EDT-MCL: beam-end model of the centre, mixed with the same floor eta.
@@ -126,7 +173,7 @@ double SensorModel::kernel(const PreparedDetection& det, double c, double s, dou
 template <SensorModelType T>
 void SensorModel::accumulate(const PreparedDetection* dets, std::size_t num_dets, const mrpt::math::TPose2D* poses,
                              std::size_t n, double* sum_log) const {
-    geometry::ConvexPolygon scratch;  // transformed footprint, reused for every pair
+    Scratch scratch;  // moved footprints, reused for every pair
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = poses[i];
         const double c = std::cos(p.phi), s = std::sin(p.phi);
@@ -138,7 +185,7 @@ void SensorModel::accumulate(const PreparedDetection* dets, std::size_t num_dets
 
 double SensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
     const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-    geometry::ConvexPolygon fp;
+    Scratch fp;
     switch (m_params.type) {
         case SensorModelType::Simp: return kernel<SensorModelType::Simp>(det, c, s, pose.x, pose.y, fp);
         case SensorModelType::Edt: return kernel<SensorModelType::Edt>(det, c, s, pose.x, pose.y, fp);

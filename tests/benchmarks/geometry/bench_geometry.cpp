@@ -5,6 +5,7 @@
 #include <simp/geometry/ConvexPolygon.h>
 #include <simp/geometry/Footprint.h>
 #include <simp/geometry/Hungarian.h>
+#include <simp/geometry/OrientedRect.h>
 #include <simp/geometry/RotationAverage.h>
 
 #include <benchmark/benchmark.h>
@@ -129,5 +130,72 @@ void BM_AverageRotations_Two(benchmark::State& state) {
     for (auto _ : state) benchmark::DoNotOptimize(averageRotations(Rs, w));
 }
 BENCHMARK(BM_AverageRotations_Two);
+
+}  // namespace
+
+namespace {
+
+/// The sensor model's tracking case in a map object's frame: a rectangle of 0.3..1.5 m sides
+/// within 0.3 m and 0.3 rad of the aligned one it is intersected with (nearly all overlap).
+struct TrackingPairs {
+    static constexpr std::size_t kPairs = 1024;
+    std::vector<OrientedRect> a;
+    std::vector<ConvexPolygon> a_polygon;
+    std::vector<double> hx, hy;
+    TrackingPairs() {
+        std::mt19937_64 rng(5);
+        std::uniform_real_distribution<double> side(0.3, 1.5), offset(-0.3, 0.3), yaw(-0.3, 0.3);
+        for (std::size_t i = 0; i < kPairs; ++i) {
+            const double lx = side(rng), ly = side(rng), phi = yaw(rng);
+            OrientedRect r;
+            r.center = {offset(rng), offset(rng)};
+            r.c = std::cos(phi);
+            r.s = std::sin(phi);
+            r.hx = 0.5 * lx * (1.0 + 0.2 * offset(rng));
+            r.hy = 0.5 * ly;
+            a.push_back(r);
+            a_polygon.push_back(r.polygon());
+            hx.push_back(0.5 * lx);
+            hy.push_back(0.5 * ly);
+        }
+    }
+};
+const TrackingPairs& trackingPairs() {
+    static const TrackingPairs pairs;
+    return pairs;
+}
+
+void BM_AlignedRect_Rectangle(benchmark::State& state) {
+    const auto& p = trackingPairs();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(intersectionAreaWithAlignedRect(p.a[i], p.hx[i], p.hy[i]));
+        i = (i + 1) % TrackingPairs::kPairs;
+    }
+}
+BENCHMARK(BM_AlignedRect_Rectangle);
+
+void BM_AlignedRect_Polygon(benchmark::State& state) {
+    const auto& p = trackingPairs();
+    std::size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(intersectionAreaWithAlignedRect(p.a_polygon[i], p.hx[i], p.hy[i]));
+        i = (i + 1) % TrackingPairs::kPairs;
+    }
+}
+BENCHMARK(BM_AlignedRect_Polygon);
+
+/// The same pairs by the generic clipping (the aligned rectangles built outside the loop).
+void BM_AlignedRect_Generic(benchmark::State& state) {
+    const auto& p = trackingPairs();
+    std::vector<ConvexPolygon> b;
+    for (std::size_t i = 0; i < TrackingPairs::kPairs; ++i) b.push_back(makeRectangle({0, 0}, 2 * p.hx[i], 2 * p.hy[i], 0));
+    std::size_t i = 0;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(intersectionArea(p.a_polygon[i], b[i]));
+        i = (i + 1) % TrackingPairs::kPairs;
+    }
+}
+BENCHMARK(BM_AlignedRect_Generic);
 
 }  // namespace

@@ -136,12 +136,13 @@ void run(benchmark::State& state, simp::maps::SensorModelType type, bool global)
     // and fraction that also needs the polygon clipping (bounding circles overlap).
     if (type == simp::maps::SensorModelType::Simp) {
         const auto model = map.sensorModel();
-        std::size_t hits = 0, clips = 0;
+        std::size_t hits = 0, clips = 0, det_rects = 0;
         for (std::size_t k = 0; k < obs.size(); ++k) {
             const auto& det = obs.detections()[k];
             const int cls = bm.data.classId(obs.classNameOf(det));
             const auto prepared = model->prepare(cls, obs.boxInRobot(k), obs.footprintInRobot(k));
             if (!prepared) continue;
+            det_rects += prepared->is_rect ? 1 : 0;
             for (const auto& p : poses) {
                 const double c = std::cos(p.phi), s = std::sin(p.phi);
                 const Eigen::Vector2d w(c * prepared->center_robot_m.x() - s * prepared->center_robot_m.y() + p.x,
@@ -153,8 +154,13 @@ void run(benchmark::State& state, simp::maps::SensorModelType type, bool global)
                 if (simp::maps::circlesOverlap(w, prepared->radius_m, of.circle_center_m, of.circle_radius_m)) ++clips;
             }
         }
+        // Rectangular footprints take the fast IoU path (geometry/OrientedRect.h).
+        std::size_t rects = 0;
+        for (const auto& f : model->footprints().objects) rects += f.is_rect ? 1 : 0;
+        state.counters["rect_frac"] = static_cast<double>(rects) / static_cast<double>(model->footprints().objects.size());
         state.counters["hit_frac"] = static_cast<double>(hits) / pairs;
         state.counters["clip_frac"] = static_cast<double>(clips) / pairs;
+        state.counters["det_rect_frac"] = static_cast<double>(det_rects) / static_cast<double>(used);
     }
     // Seconds per (particle x detection): printed with an SI prefix, e.g. "40n" = 40 ns.
     state.counters["time_per_pair"] =

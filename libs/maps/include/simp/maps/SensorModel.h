@@ -6,7 +6,9 @@
 #include <mrpt/math/TPose2D.h>
 #include <simp/geometry/Box3D.h>
 #include <simp/geometry/ConvexPolygon.h>
+#include <simp/geometry/OrientedRect.h>
 #include <simp/maps/EdtMap.h>
+#include <simp/maps/IouScore.h>
 #include <simp/maps/MapFootprints.h>
 #include <simp/maps/ObjectProbabilityMap.h>
 #include <simp/maps/SensorModelTypes.h>
@@ -23,6 +25,9 @@ struct PreparedDetection {
     geometry::ConvexPolygon footprint_robot;                ///< ground footprint (robot frame, m)
     double area_m2 = 0;                                     ///< footprint area (m^2)
     double radius_m = 0;                                    ///< bounding circle about center_robot_m (m)
+    geometry::ConvexPolygon offsets_robot;  ///< footprint_robot - center_robot_m: moved into a map object's frame
+    bool is_rect = false;                   ///< footprint_robot is a rectangle: rect_robot (separating-axis test)
+    geometry::OrientedRect rect_robot;
     double noise_inv_scale2 = 1;  ///< 1 / s^2 of the range growth (SensorModelParams::noise_reference_range_m)
     double weight = 1;            ///< exponent on p(z_k | m, x): 1 = an independent detection, < 1 a repeated one
 };
@@ -58,9 +63,14 @@ class SensorModel {
     const EdtMap& edt() const { return m_edt; }
 
    private:
+    /// Footprints moved per pair, reused for every pair of a call (no construction per pair).
+    struct Scratch {
+        geometry::ConvexPolygon world;  ///< the detection in the world (generic clipping)
+        bool world_valid = false;       ///< `world` holds the current pair's pose
+        geometry::ConvexPolygon local;  ///< the detection in a rectangular map object's frame
+    };
     template <SensorModelType T>
-    double kernel(const PreparedDetection& det, double c, double s, double tx, double ty,
-                  geometry::ConvexPolygon& scratch) const;
+    double kernel(const PreparedDetection& det, double c, double s, double tx, double ty, Scratch& scratch) const;
     template <SensorModelType T>
     void accumulate(const PreparedDetection* dets, std::size_t num_dets, const mrpt::math::TPose2D* poses,
                     std::size_t n, double* sum_log) const;
@@ -72,6 +82,7 @@ class SensorModel {
     std::size_t m_num_usable_objects = 0;
     double m_log_eta = 0;
     double m_exp_minus_1 = 0;
+    IouScore m_iou_score;  ///< Eq. iouscore
     double m_inv_two_sigma2 = 0;
 };
 

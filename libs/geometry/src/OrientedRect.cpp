@@ -1,0 +1,140 @@
+#include <simp/geometry/OrientedRect.h>
+
+#include "ClipBuffer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace simp::geometry {
+namespace {
+
+using detail::ClipBuffer;
+
+/// Sutherland-Hodgman step against one edge of [-h, h] on one axis: keeps u <= h (kUpper)
+/// or u >= -h, where u is x (kAlongX) or y. The same rule as clipByEdge in ConvexPolygon.cpp
+/// (points on the line are kept), but the signed distance is one subtraction and a new
+/// vertex lies exactly on the edge.
+template <bool kAlongX, bool kUpper>
+void clipAxis(const ClipBuffer& in, double h, ClipBuffer& out) {
+    const double* u = kAlongX ? in.x : in.y;
+    const double* w = kAlongX ? in.y : in.x;
+    double* ou = kAlongX ? out.x : out.y;
+    double* ow = kAlongX ? out.y : out.x;
+    const double edge = kUpper ? h : -h;
+    const std::size_t n = in.n;
+    std::size_t m = 0;
+    double pu = u[n - 1], pw = w[n - 1];
+    double ps = kUpper ? h - pu : pu + h;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double cu = u[i], cw = w[i];
+        const double cs = kUpper ? h - cu : cu + h;
+        if ((cs >= 0.0) != (ps >= 0.0)) {  // the edge crosses the line
+            ou[m] = edge;
+            ow[m] = pw + ps / (ps - cs) * (cw - pw);
+            ++m;
+        }
+        if (cs >= 0.0) {
+            ou[m] = cu;
+            ow[m] = cw;
+            ++m;
+        }
+        pu = cu;
+        pw = cw;
+        ps = cs;
+    }
+    out.n = m;
+}
+
+}  // namespace
+
+ConvexPolygon OrientedRect::polygon() const {
+    const Eigen::Vector2d ax(c * hx, s * hx), ay(-s * hy, c * hy);
+    ConvexPolygon r;
+    r.push(center - ax - ay);
+    r.push(center + ax - ay);
+    r.push(center + ax + ay);
+    r.push(center - ax + ay);
+    return r;
+}
+
+std::optional<OrientedRect> asRectangle(const ConvexPolygon& p, double rel_tol) {
+    if (p.n != 4) return std::nullopt;
+    const Eigen::Vector2d e0 = p.v[1] - p.v[0], e1 = p.v[2] - p.v[1], e2 = p.v[3] - p.v[2], e3 = p.v[0] - p.v[3];
+    const double l0 = e0.norm(), l1 = e1.norm(), l2 = e2.norm(), l3 = e3.norm();
+    const double longest = std::max({l0, l1, l2, l3});
+    if (!(std::min({l0, l1, l2, l3}) > 0.0) || !std::isfinite(longest)) return std::nullopt;  // degenerate: generic path
+    const double tol = rel_tol * longest;
+    if ((e0 + e2).norm() > tol || (e1 + e3).norm() > tol || std::abs(e0.dot(e1)) > tol * longest) return std::nullopt;
+    OrientedRect r;
+    r.center = 0.25 * (p.v[0] + p.v[1] + p.v[2] + p.v[3]);
+    const Eigen::Vector2d axis = (e0 - e2).normalized();  // both sides along x, averaged
+    r.c = axis.x();
+    r.s = axis.y();
+    r.hx = 0.25 * (l0 + l2);
+    r.hy = 0.25 * (l1 + l3);
+    return r;
+}
+
+namespace {
+
+/// Clips `cur` (bounds x0..x1, y0..y1, overlapping the rectangle) to [-hx, hx] x [-hy, hy]
+/// and returns the area. Only the edges that cut the bounds clip: a pass by an edge the
+/// polygon lies inside of would return it unchanged, so skipping it changes nothing.
+double clipToAlignedRect(ClipBuffer* cur, ClipBuffer* next, double x0, double x1, double y0, double y1, double hx,
+                         double hy) {
+    const auto pass = [&](auto clip) {
+        if (cur->n > ClipBuffer::kCapacity / 2) return;  // unreachable for convex input
+        clip(*cur, *next);
+        std::swap(cur, next);
+    };
+    if (x1 > hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, true>(in, hx, out); });
+    if (cur->n >= 3 && x0 < -hx) pass([hx](const ClipBuffer& in, ClipBuffer& out) { clipAxis<true, false>(in, hx, out); });
+    if (cur->n >= 3 && y1 > hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, true>(in, hy, out); });
+    if (cur->n >= 3 && y0 < -hy) pass([hy](const ClipBuffer& in, ClipBuffer& out) { clipAxis<false, false>(in, hy, out); });
+    return cur->area();
+}
+
+}  // namespace
+
+double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double hy) {
+    if (p.n < 3) return 0.0;
+    double x0 = p.v[0].x(), x1 = x0, y0 = p.v[0].y(), y1 = y0;
+    for (std::size_t i = 1; i < p.n; ++i) {
+        x0 = std::min(x0, p.v[i].x());
+        x1 = std::max(x1, p.v[i].x());
+        y0 = std::min(y0, p.v[i].y());
+        y1 = std::max(y1, p.v[i].y());
+    }
+    // Separating axis along x or y: the bounds are outside (touching gives area 0).
+    if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
+    ClipBuffer buf1, buf2;
+    buf1.load(p);
+    return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
+}
+
+double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double hy) {
+    // a's half axes; its bounds follow from them without visiting the vertices.
+    const double ux = a.c * a.hx, uy = a.s * a.hx, vx = -a.s * a.hy, vy = a.c * a.hy;
+    const double ex = std::abs(ux) + std::abs(vx), ey = std::abs(uy) + std::abs(vy);
+    const double cx = a.center.x(), cy = a.center.y();
+    const double x0 = cx - ex, x1 = cx + ex, y0 = cy - ey, y1 = cy + ey;
+    // Separating axes: the aligned rectangle's (the bounds: the cheapest, tried first), then all four.
+    if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
+    OrientedRect aligned;
+    aligned.hx = hx;
+    aligned.hy = hy;
+    if (separated(a, aligned)) return 0.0;
+    ClipBuffer buf1, buf2;
+    buf1.n = 4;
+    buf1.x[0] = cx - ux - vx;
+    buf1.y[0] = cy - uy - vy;
+    buf1.x[1] = cx + ux - vx;
+    buf1.y[1] = cy + uy - vy;
+    buf1.x[2] = cx + ux + vx;
+    buf1.y[2] = cy + uy + vy;
+    buf1.x[3] = cx - ux + vx;
+    buf1.y[3] = cy - uy + vy;
+    return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
+}
+
+}  // namespace simp::geometry
