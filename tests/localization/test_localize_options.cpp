@@ -2,7 +2,8 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <simp/localization/LocalizeOptions.h>
+#include <simp/io/StrictIni.h>
+#include <simp/localization/Localizer.h>
 
 using namespace simp::localization;
 
@@ -36,12 +37,15 @@ TEST(LocalizeOptions, MotionModelGivesTheNoiseOfTheIncrement) {
 }
 
 TEST(LocalizeOptions, LoadsEveryKey) {
-    mrpt::config::CConfigFileMemory cfg(
+    const simp::io::StrictIni cfg(
         "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
         "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
         "prune_keeps_weight=false\nsingw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
-        "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n");
-    validateIniKeys(cfg, "x.ini");
+        "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n",
+        "x.ini");
+    LocalizerOptions all;
+    loadLocalizerOptions(cfg, all);
+    cfg.checkUnknown();
     ExperimentOptions e;
     e.loadFromConfigFile(cfg, "LocalizationExperiment");
     EXPECT_EQ(e.particles_count, 123u);
@@ -64,13 +68,11 @@ TEST(LocalizeOptions, LoadsEveryKey) {
 
 TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     auto message = [](const std::string& ini) {
-        mrpt::config::CConfigFileMemory cfg(ini);
         try {
-            validateIniKeys(cfg, "my.ini");
-            ExperimentOptions e;
-            e.loadFromConfigFile(cfg, "LocalizationExperiment");
-            MotionModelOptions m;
-            m.loadFromConfigFile(cfg, "MotionModel");
+            const simp::io::StrictIni cfg(ini, "my.ini");
+            LocalizerOptions all;
+            loadLocalizerOptions(cfg, all);
+            cfg.checkUnknown();
         } catch (const std::exception& ex) {
             return std::string(ex.what());
         }
@@ -94,4 +96,11 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     EXPECT_NE(message("[LocalizationExperiment]\nsingw_per_frame=sometimes\n").find("singw_per_frame"), std::string::npos);
     EXPECT_NE(message("[MotionModel]\nmodelSelection=magic\n").find("modelSelection"), std::string::npos);
     EXPECT_EQ(message("[LocalizationExperiment]\nparticles_count=10\n"), "");
+    // MRPT's own option structs are checked too: a value MRPT's atoi would read as 0.
+    m = message("[KLD_options]\nKLD_maxSampleSize=abc\n");
+    EXPECT_NE(m.find("my.ini: [KLD_options] KLD_maxSampleSize"), std::string::npos) << m;
+    EXPECT_NE(message("[PF_options]\nBETA=0.5x\n").find("BETA"), std::string::npos);
+    EXPECT_NE(message("[Localization]\nparticles_count=10\n").find("unknown section [Localization]"), std::string::npos);
+    EXPECT_NE(message("particles_count=10\n").find("outside any [section]"), std::string::npos);
+    EXPECT_NE(message("garbage\n").find("neither [section] nor key = value"), std::string::npos);
 }

@@ -1,5 +1,6 @@
 /// \file RosDetectionsCsv.cpp
 #include <simp/labels/Omni3DBox.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/labels/RosDetectionsCsv.h>
 
 #include <cmath>
@@ -26,11 +27,9 @@ std::string trim(const std::string& s) {
 
 double toNumber(const std::string& field, const std::string& file, std::size_t line, std::size_t column) {
     const std::string f = trim(field);
-    char* end = nullptr;
-    const double x = std::strtod(f.c_str(), &end);
-    if (f.empty() || end != f.c_str() + f.size() || !std::isfinite(x))
-        failAt(file, line, "column " + std::to_string(column) + ": expected a finite number, got '" + f + "'");
-    return x;
+    const auto x = io::parseFiniteNumber(f);
+    if (!x) failAt(file, line, "column " + std::to_string(column) + ": expected a finite number, got '" + f + "'");
+    return *x;
 }
 
 }  // namespace

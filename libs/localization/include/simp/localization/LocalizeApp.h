@@ -5,14 +5,16 @@
 /// (as mrpt::apps::MonteCarloLocalization_App).
 
 #include <mrpt/bayes/CParticleFilter.h>
-#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/StrictIni.h>
 #include <simp/io/Tum.h>
+#include <simp/maps/CObjectMap.h>
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/Localizer.h>
 #include <simp/localization/ParticleSummary.h>
 #include <simp/localization/StepRecord.h>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -38,7 +40,7 @@ class LocalizeApp {
     /// @name Parameters (filled by initialize(); may be changed before run())
     /// @{
     std::string world_dir, rawlog_path, out_dir, config_path;
-    mrpt::config::CConfigFileMemory params;  ///< the .ini content (empty without --config)
+    std::unique_ptr<io::StrictIni> params;   ///< the .ini (empty without --config)
     LocalizerOptions options;                ///< everything the .ini sets
     /// --initial-pose: x, y (m), phi (rad), sigma_xy (m), sigma_phi (rad); tracking from it
     std::optional<std::array<double, 5>> initial_pose;
@@ -58,6 +60,7 @@ class LocalizeApp {
 
    private:
     void loadConfig();
+    std::shared_ptr<maps::CObjectMap> m_object_map;  ///< made from the .ini by initialize()
 };
 
 /// --initial-pose "x,y,phi[,sigma_xy,sigma_phi]" -> {x, y, phi, sigma_xy, sigma_phi} (defaults 0.2 m,
