@@ -167,8 +167,11 @@ void createFiles(const std::string& files, const fs::path& dir, const Variables&
         if (eq == std::string::npos) throw std::runtime_error("file entry '" + entry + "' has no '='");
         const fs::path target = dir / trim(entry.substr(0, eq));
         const std::string spec = substitute(entry.substr(eq + 1), vars);
-        if (spec == "@dir") {
+        if (spec == "@dir") {  // replaces a file of that name (e.g. of a copied world)
+            if (fs::exists(target) && !fs::is_directory(target)) fs::remove(target);
             fs::create_directories(target);
+        } else if (spec == "@empty") {
+            writeAll(target, "");
         } else if (spec.rfind("@copy:", 0) == 0) {
             const fs::path src = spec.substr(6);
             if (target.has_parent_path()) fs::create_directories(target.parent_path());

@@ -45,7 +45,7 @@ TEST(StrictIni, SyntaxErrorsNameFileAndLine) {
               std::string::npos);
     EXPECT_NE(messageOf([] { StrictIni("[s]\nhello world\n", "a.ini"); }).find("a.ini:2:"), std::string::npos);
     EXPECT_NE(messageOf([] { StrictIni("[s]\nx=1\nx=2\n", "a.ini"); }).find("set twice"), std::string::npos);
-    EXPECT_NE(messageOf([] { StrictIni(std::string("[s]\nx=\0", 6), "a.ini"); }).find("NUL"), std::string::npos);
+    EXPECT_NE(messageOf([] { StrictIni(std::string("[s]\nx=\0", 7), "a.ini"); }).find("NUL"), std::string::npos);
     EXPECT_NE(messageOf([] { StrictIni("/nonexistent/x.ini"); }).find("does not exist"), std::string::npos);
     EXPECT_NE(messageOf([] { StrictIni("/tmp"); }).find("is not a regular file"), std::string::npos);
     EXPECT_EQ(messageOf([] { StrictIni("; comment\n# c\n// c\n[s] ; c\nx = 1 // c\n", "a.ini"); }), "");

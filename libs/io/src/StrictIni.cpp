@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -143,13 +144,23 @@ std::string StrictIni::readString(const std::string& section, const std::string&
         case Expect::Number:
             if (!parseFiniteNumber(text)) throw std::invalid_argument(where(section, name) + " = '" + text + "' is not a finite number");
             break;
-        case Expect::Integer:
-            if (!parseWholeInteger(text)) throw std::invalid_argument(where(section, name) + " = '" + text + "' is not an integer");
+        case Expect::Integer: {
+            // read_int's atoi overflows silently: an int default ("%i") needs a value that fits an int.
+            const auto v = parseWholeInteger(text);
+            const auto d = parseWholeInteger(defaultStr);
+            const bool int_default = d && *d >= std::numeric_limits<int>::min() && *d <= std::numeric_limits<int>::max();
+            if (!v) throw std::invalid_argument(where(section, name) + " = '" + text + "' is not an integer");
+            if (int_default && (*v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max()))
+                throw std::invalid_argument(where(section, name) + " = " + text + " is out of the integer range");
             break;
+        }
         case Expect::IntegerOrBool: {
             const std::string l = lower(text);
-            if (!parseWholeInteger(text) && l != "true" && l != "false" && l != "yes" && l != "no")
+            const auto v = parseWholeInteger(text);
+            if (!v && l != "true" && l != "false" && l != "yes" && l != "no")
                 throw std::invalid_argument(where(section, name) + " = '" + text + "' is not an integer or true/false");
+            if (v && (*v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max()))
+                throw std::invalid_argument(where(section, name) + " = " + text + " is out of the integer range");
             break;
         }
     }

@@ -154,27 +154,23 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
 
 void LocalizeApp::loadConfig() {
     // Every option struct reads through the StrictIni, so its keys are the known ones: no list here.
+    params = std::make_unique<io::StrictIni>(config_path);
+    const std::string file = config_path.empty() ? "(no --config)" : config_path;
     try {
-        params = std::make_unique<io::StrictIni>(config_path);
-        const std::string file = config_path.empty() ? "(no --config)" : config_path;
-        try {
-            loadLocalizerOptions(*params, options);
-        } catch (const std::exception& e) {
-            const std::string m = describeError(e);
-            throw std::invalid_argument(m.rfind(file, 0) == 0 ? m : file + ": " + m);
-        }
-        try {
-            m_object_map = makeObjectMap(*params, file);
-        } catch (const std::invalid_argument&) {
-            throw;
-        } catch (const std::exception& e) {
-            throw std::invalid_argument(file + ": [MetricMap]: " + describeError(e));
-        }
-        params->checkUnknown();
-    } catch (const std::invalid_argument& e) {
-        const std::string m = e.what();
-        throw std::invalid_argument(m.rfind("simp-localize", 0) == 0 ? m : "simp-localize: " + m);
+        loadLocalizerOptions(*params, options);
+    } catch (const std::exception& e) {
+        const std::string m = describeError(e);
+        throw std::invalid_argument(m.rfind(file, 0) == 0 ? m : file + ": " + m);
     }
+    try {
+        m_object_map = makeObjectMap(*params, file);
+    } catch (const std::invalid_argument&) {
+        throw;
+    } catch (const std::exception& e) {
+        const std::string m = describeError(e);
+        throw std::invalid_argument(m.find(file) != std::string::npos ? m : file + ": [MetricMap]: " + m);
+    }
+    params->checkUnknown();
     if (options.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfOptimalProposal)
         throw std::invalid_argument(config_path +
                                     ": [PF_options] PF_algorithm = pfOptimalProposal is not implemented by MRPT's "
