@@ -269,6 +269,7 @@ Outcome runCase(const Case& c, const fs::path& cases_root, Variables vars) {
     std::vector<std::string> argv{vars.at("BIN") + c.app};
     for (const auto& a : splitArgs(c.args)) argv.push_back(substitute(a, vars));
     const RunResult r = runProcess(argv, dir / "output.txt", 60);
+    o.seconds = r.seconds;
     try {
         o.output = readAll(dir / "output.txt");
     } catch (const std::exception&) {

@@ -32,6 +32,7 @@ struct Outcome {
     bool ok = false;
     std::string problem;       ///< why not ok
     std::string output;        ///< stdout + stderr
+    double seconds = 0;        ///< wall time of the process
 };
 
 /// Rows of the table ('#' lines and blank lines skipped). \throw std::runtime_error naming the line.

@@ -26,6 +26,7 @@ namespace {
 /// $D (tests/data), made once with the project's own apps (tiny: 2 rooms, 4 s).
 Variables makeFixtures(const fs::path& root) {
     const std::string bin = std::string(SIMP_BINARY_DIR) + "/bin/";
+    fs::create_directories(root);
     Variables v;
     v["W"] = (root / "world").string();
     v["Q"] = (root / "seq").string();
@@ -86,6 +87,12 @@ TEST(BadInput, EveryCaseOfTheTableFailsCleanly) {
         summary << "FAIL line " << cases[i].line << ": " << outcomes[i].problem << "\n";
     }
     summary << passed << " of " << cases.size() << " cases passed in " << seconds << " s\n";
+    std::vector<std::size_t> order(cases.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return outcomes[x].seconds > outcomes[y].seconds; });
+    summary << "slowest cases:\n";
+    for (std::size_t k = 0; k < std::min<std::size_t>(15, order.size()); ++k)
+        summary << "  line " << cases[order[k]].line << ": " << outcomes[order[k]].seconds << " s " << cases[order[k]].app << "\n";
     for (const auto& [app, n] : per_app) summary << app << ": " << n << " cases\n";
     std::cout << "[bad-input] " << passed << " of " << cases.size() << " cases passed in " << seconds << " s ("
               << per_app.size() << " apps); details in " << (root / "summary.txt").string() << "\n";

@@ -24,6 +24,7 @@ void check(const Detection2D& d, const std::vector<std::string>& names, const st
     if (std::find(names.begin(), names.end(), d.class_name) == names.end())
         world::failAt(file, where, "unknown class '" + d.class_name + "' (not a class of the world)");
     if (!(d.x_max > d.x_min) || !(d.y_max > d.y_min)) world::failAt(file, where, "expected x_min < x_max and y_min < y_max");
+    if (!(d.score >= 0 && d.score <= 1)) world::failAt(file, where, "score " + std::to_string(d.score) + " must be in [0, 1]");
 }
 
 std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std::string>& names) {

@@ -3,6 +3,8 @@
 #include <simp/io/StrictNumber.h>
 #include <simp/labels/RosDetectionsCsv.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -82,6 +84,13 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
             d.class_id = static_cast<std::uint16_t>(cls);
             try {
                 d.box_in_camera = boxFromOmni3DCorners(corners);
+                // The 8 corners must be a box (1 mm + 0.1 % of its diagonal): anything else is not a detection.
+                const auto refit = omni3DCorners(d.box_in_camera);
+                double off = 0;
+                for (std::size_t c = 0; c < 8; ++c) off = std::max(off, (refit[c] - corners[c]).norm());
+                if (!(off <= 1e-3 + 1e-3 * d.box_in_camera.size.norm()))
+                    throw std::invalid_argument("the 8 corners do not form a box (a corner is " + std::to_string(off) +
+                                                " m off the fitted box)");
                 obs::validateDetection(d, class_names.size(), "object " + std::to_string(k));
             } catch (const std::exception& e) {
                 failAt(path, line_no, std::string("object ") + std::to_string(k) + ": " + e.what());
@@ -90,6 +99,7 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
         }
         set.images.push_back(im);
     }
+    if (set.images.empty()) failAt(path, 0, "no detection rows (an empty file makes a rawlog without frames)");
     return set;
 }
 
