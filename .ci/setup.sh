@@ -34,7 +34,8 @@ cmake --build "$BUILD_DIR" -j"$(nproc)"
 # The whole CTest suite again, built with AddressSanitizer + UndefinedBehaviorSanitizer in its own
 # folder (build-asan), leak checking on, every finding fatal. Suppressions: tests/sanitizers/*.supp
 # (third-party only, each justified there). Tests labelled `asan_skip` (long end-to-end runs, see
-# doc/sanitizers.md) are left out. SIMP_SANITIZER_STAGE=0 skips the stage. No -Werror here: GCC warns
+# doc/sanitizers.md) are left out. Opt-in for now: SIMP_SANITIZER_STAGE=1 runs it (its whole-suite
+# time and cleanliness are not measured yet on CI's machine; doc/sanitizers.md says what is missing). No -Werror here: GCC warns
 # differently under -fsanitize (false -Wmaybe-uninitialized); the normal build above keeps -Werror.
 sanitizer_stage() {
   local dir="${ASAN_BUILD_DIR:-build-asan}" t0=$SECONDS root
@@ -56,7 +57,7 @@ sanitizer_stage() {
 case "$mode" in
   test)
     (cd "$BUILD_DIR" && ctest --output-on-failure -j"$(nproc)" --timeout 900)
-    if [ "${SIMP_SANITIZER_STAGE:-1}" != "0" ]; then sanitizer_stage; fi
+    if [ "${SIMP_SANITIZER_STAGE:-0}" = "1" ]; then sanitizer_stage; fi
     ;;
   demo)
     if [ -x "$BUILD_DIR/bin/simp-demo" ]; then
