@@ -81,7 +81,13 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     std::string m = message("[LocalizationExperiment]\nparticle=5\n");
     EXPECT_NE(m.find("my.ini"), std::string::npos);
     EXPECT_NE(m.find("'particle'"), std::string::npos);
-    EXPECT_NE(message("[PF_options]\nBETTA=0.5\n").find("BETTA"), std::string::npos);
+    // MRPT's [PF_options] has required keys: a section with all of them plus a misspelt one.
+    const std::string pf = "[PF_options]\nPF_algorithm=pfStandardProposal\nresamplingMethod=prSystematic\n"
+                           "adaptiveSampleSize=false\nBETA=0.5\nsampleSize=1\npowFactor=1\n"
+                           "max_loglikelihood_dyn_range=15\npfAuxFilterOptimal_MaximumSearchSamples=100\n";
+    EXPECT_NE(message(pf + "BETTA=0.5\n").find("my.ini: [PF_options] unknown key 'BETTA'"), std::string::npos)
+        << message(pf + "BETTA=0.5\n");
+    EXPECT_NE(message("[PF_options]\nBETA=0.5\n").find("Value for 'adaptiveSampleSize' not found"), std::string::npos);
     EXPECT_NE(message("[KLD_options]\nKLD_size=1\n").find("KLD_size"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=-3\n").find("particles_count"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=12.5\n").find("particles_count"), std::string::npos);
@@ -99,7 +105,8 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     // MRPT's own option structs are checked too: a value MRPT's atoi would read as 0.
     m = message("[KLD_options]\nKLD_maxSampleSize=abc\n");
     EXPECT_NE(m.find("my.ini: [KLD_options] KLD_maxSampleSize"), std::string::npos) << m;
-    EXPECT_NE(message("[PF_options]\nBETA=0.5x\n").find("BETA"), std::string::npos);
+    const std::string bad_beta = message(std::string(pf).replace(pf.find("BETA=0.5"), 8, "BETA=0.5x"));
+    EXPECT_NE(bad_beta.find("BETA"), std::string::npos) << bad_beta;
     EXPECT_NE(message("[Localization]\nparticles_count=10\n").find("unknown section [Localization]"), std::string::npos);
     EXPECT_NE(message("particles_count=10\n").find("outside any [section]"), std::string::npos);
     EXPECT_NE(message("garbage\n").find("neither [section] nor key = value"), std::string::npos);
