@@ -31,7 +31,8 @@ std::string methodLabel(const std::string& method) {
     return method;
 }
 
-BatchConfig loadBatchConfig(const std::string& ini_path) {
+namespace {
+BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
     const io::StrictIni ini(ini_path);  // exists, is a file, is an .ini
     const auto fail = [&](const std::string& key, const std::string& why) {
         throw std::runtime_error("batch config '" + ini_path + "', key '" + key + "': " + why);
@@ -80,6 +81,15 @@ BatchConfig loadBatchConfig(const std::string& ini_path) {
         fail("[metrics] convergence_fraction", "must be in (0, 1]");
     ini.checkUnknown({"map_metrics"});
     return c;
+}
+}  // namespace
+
+BatchConfig loadBatchConfig(const std::string& ini_path) {
+    try {
+        return loadBatchConfigStrict(ini_path);
+    } catch (const std::invalid_argument& e) {  // io::StrictIni's errors: this function throws runtime_error
+        throw std::runtime_error(e.what());
+    }
 }
 
 std::string BatchConfig::dump() const {
