@@ -64,11 +64,35 @@ install_check() {
 }
 # ---- end of install check ----
 
+# ---- sanitizer stage (issue #14, doc/sanitizers.md) --------------------------------------------
+# The whole CTest suite again, built with AddressSanitizer + UndefinedBehaviorSanitizer in its own
+# folder (build-asan), leak checking on, every finding fatal. Suppressions: tests/sanitizers/*.supp
+# (third-party only, each justified there). Tests labelled `asan_skip` (long end-to-end runs, see
+# doc/sanitizers.md) are left out. Opt-in for now: SIMP_SANITIZER_STAGE=1 runs it (its whole-suite
+# time and cleanliness are not measured yet on CI's machine; doc/sanitizers.md says what is missing). No -Werror here: GCC warns
+# differently under -fsanitize (false -Wmaybe-uninitialized); the normal build above keeps -Werror.
+sanitizer_stage() {
+  local dir="${ASAN_BUILD_DIR:-build-asan}" t0=$SECONDS root
+  root="$(pwd)"
+  echo "[setup] sanitizer stage: ASan + UBSan build in $dir"
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+        -DSIMP_SANITIZE=address,undefined -DSIMP_BUILD_BENCHMARKS=OFF -DSIMP_WERROR=OFF
+  cmake --build "$dir" -j"$(nproc)"
+  (
+    cd "$dir"
+    export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=0"
+    export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp:print_suppressions=0"
+    export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$root/tests/sanitizers/ubsan.supp"
+    ctest --output-on-failure -j"$(nproc)" --timeout 1800 -LE asan_skip
+  )
+  echo "[setup] sanitizer stage passed in $((SECONDS - t0)) s"
+}
+
 case "$mode" in
   test)
-    cd "$BUILD_DIR"
-    ctest --output-on-failure -j"$(nproc)" --timeout 900
+    (cd "$BUILD_DIR" && ctest --output-on-failure -j"$(nproc)" --timeout 900)
     install_check
+    if [ "${SIMP_SANITIZER_STAGE:-0}" = "1" ]; then sanitizer_stage; fi
     ;;
   demo)
     if [ -x "$BUILD_DIR/bin/simp-demo" ]; then

@@ -1,22 +1,21 @@
 // simp-example-rawlog: writes a small deterministic rawlog of 3D-object observations,
 // e.g. to try `rawlog-edit --plugins build/lib/libsimp_obs.so --info -i example.rawlog`.
+#include <simp/io/StrictNumber.h>
 #include <simp/obs/ExampleRawlog.h>
+#include <simp/obs/InputLimits.h>
 
-#include <charconv>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <string>
 
 namespace {
 
-/// A non-negative decimal integer, all of the text (std::stoul accepted "-1" as 2^64 - 1 and "3x").
-std::uint64_t parseCount(const std::string& option, const std::string& text) {
-    std::uint64_t v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-        throw std::invalid_argument("option " + option + ": '" + text + "' is not a non-negative integer");
-    return v;
+/// A count within the documented range (ExampleRawlog.h), strictly parsed: "-1", "3x", "1e3" are errors.
+std::size_t parseCount(const std::string& option, const std::string& text, std::size_t lo, std::size_t hi) {
+    return static_cast<std::size_t>(
+        simp::io::parseInteger(text, "option " + option, static_cast<std::int64_t>(lo), static_cast<std::int64_t>(hi)));
 }
 
 }  // namespace
@@ -38,10 +37,12 @@ int main(int argc, char** argv) {
                              "per frame) for trying MRPT's tools with the plugin.\n";
                 return 0;
             } else if (a == "--out") out = next();
-            else if (a == "--frames") p.frames = parseCount(a, next());
-            else if (a == "--cameras") p.cameras = parseCount(a, next());
-            else if (a == "--detections") p.detections = parseCount(a, next());
-            else if (a == "--seed") p.seed = parseCount(a, next());
+            else if (a == "--frames") p.frames = parseCount(a, next(), 1, simp::obs::kMaxExampleFrames);
+            else if (a == "--cameras") p.cameras = parseCount(a, next(), 1, simp::obs::kMaxExampleCameras);
+            else if (a == "--detections") p.detections = parseCount(a, next(), 0, simp::obs::limits::kMaxDetectionsPerFrame);
+            else if (a == "--seed")
+                p.seed = static_cast<std::uint64_t>(
+                    simp::io::parseInteger(next(), "option --seed", 0, std::numeric_limits<std::int64_t>::max()));
             else throw std::invalid_argument("unknown option '" + a + "' (see --help)");
         }
         if (out.empty()) throw std::invalid_argument("missing --out FILE.rawlog (see --help)");

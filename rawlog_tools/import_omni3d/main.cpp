@@ -7,6 +7,7 @@
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 int main(int argc, char** argv) {
     try {
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
         }
         const auto set = simp::labels::readOmni3DPredictions(args.get("predictions"));
         const auto poses = simp::io::readTum(args.get("poses"));
+        if (poses.empty()) throw std::runtime_error(args.get("poses") + ": no pose (a TUM file of t x y z qx qy qz qw lines)");
         const auto rig = simp::labels::loadCameraRig(args.get("rig"));
         const auto frames = simp::labels::framesFromDetections(set, poses, rig, args.get("predictions"));
         simp::labels::writeDetectionRawlog(args.get("out"), frames);

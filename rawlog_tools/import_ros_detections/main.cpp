@@ -8,6 +8,7 @@
 
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 int main(int argc, char** argv) {
     try {
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
         const auto rig = simp::labels::loadCameraRig(args.get("rig"));
         const auto set = simp::labels::readRosDetectionsCsv(args.get("csv"), simp::obs::defaultClassNames(), rig);
         const auto poses = simp::io::readTum(args.get("poses"));
+        if (poses.empty()) throw std::runtime_error(args.get("poses") + ": no pose (a TUM file of t x y z qx qy qz qw lines)");
         const auto frames = simp::labels::framesFromDetections(set, poses, rig, args.get("csv"));
         simp::labels::writeDetectionRawlog(args.get("out"), frames);
         std::cout << "wrote " << args.get("out") << ": " << frames.size() << " frames, " << set.images.size()

@@ -217,7 +217,7 @@ TEST(LabelsBadInput, FilesAreNamed) {
     EXPECT_NE(err([&] { labels::readDetections2D(d + "/cls.csv", names); }).find("cls.csv: line 1: unknown class 'sofa'"),
               std::string::npos);
     std::ofstream(d + "/num.csv") << "1,chair,1,two,3,4,0.5\n";
-    EXPECT_NE(err([&] { labels::readDetections2D(d + "/num.csv", names); }).find("num.csv: line 1: column 4: expected a number"),
+    EXPECT_NE(err([&] { labels::readDetections2D(d + "/num.csv", names); }).find("num.csv: line 1: column 4: expected a finite number"),
               std::string::npos);
     std::ofstream(d + "/frames.json") << R"({"images": [{"id": 1, "file_path": "a.png", "width": 640, "height": 480,
         "K": [[400, 0, 320], [0, 400, 240], [0, 0, 1]], "rotation": [[1,0,0],[0,1,0],[0,0,1]]}]})";

@@ -2,7 +2,8 @@
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
-#include <simp/localization/LocalizeOptions.h>
+#include <simp/io/StrictIni.h>
+#include <simp/localization/Localizer.h>
 
 using namespace simp::localization;
 
@@ -36,12 +37,15 @@ TEST(LocalizeOptions, MotionModelGivesTheNoiseOfTheIncrement) {
 }
 
 TEST(LocalizeOptions, LoadsEveryKey) {
-    mrpt::config::CConfigFileMemory cfg(
+    const simp::io::StrictIni cfg(
         "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
         "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
         "prune_keeps_weight=false\nsingw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
-        "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n");
-    validateIniKeys(cfg, "x.ini");
+        "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n",
+        "x.ini");
+    LocalizerOptions all;
+    loadLocalizerOptions(cfg, all);
+    cfg.checkUnknown();
     ExperimentOptions e;
     e.loadFromConfigFile(cfg, "LocalizationExperiment");
     EXPECT_EQ(e.particles_count, 123u);
@@ -64,13 +68,11 @@ TEST(LocalizeOptions, LoadsEveryKey) {
 
 TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     auto message = [](const std::string& ini) {
-        mrpt::config::CConfigFileMemory cfg(ini);
         try {
-            validateIniKeys(cfg, "my.ini");
-            ExperimentOptions e;
-            e.loadFromConfigFile(cfg, "LocalizationExperiment");
-            MotionModelOptions m;
-            m.loadFromConfigFile(cfg, "MotionModel");
+            const simp::io::StrictIni cfg(ini, "my.ini");
+            LocalizerOptions all;
+            loadLocalizerOptions(cfg, all);
+            cfg.checkUnknown();
         } catch (const std::exception& ex) {
             return std::string(ex.what());
         }
@@ -79,7 +81,13 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     std::string m = message("[LocalizationExperiment]\nparticle=5\n");
     EXPECT_NE(m.find("my.ini"), std::string::npos);
     EXPECT_NE(m.find("'particle'"), std::string::npos);
-    EXPECT_NE(message("[PF_options]\nBETTA=0.5\n").find("BETTA"), std::string::npos);
+    // MRPT's [PF_options] has required keys: a section with all of them plus a misspelt one.
+    const std::string pf = "[PF_options]\nPF_algorithm=pfStandardProposal\nresamplingMethod=prSystematic\n"
+                           "adaptiveSampleSize=false\nBETA=0.5\nsampleSize=1\npowFactor=1\n"
+                           "max_loglikelihood_dyn_range=15\npfAuxFilterOptimal_MaximumSearchSamples=100\n";
+    EXPECT_NE(message(pf + "BETTA=0.5\n").find("my.ini: [PF_options] unknown key 'BETTA'"), std::string::npos)
+        << message(pf + "BETTA=0.5\n");
+    EXPECT_NE(message("[PF_options]\nBETA=0.5\n").find("Value for 'adaptiveSampleSize' not found"), std::string::npos);
     EXPECT_NE(message("[KLD_options]\nKLD_size=1\n").find("KLD_size"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=-3\n").find("particles_count"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nparticles_count=12.5\n").find("particles_count"), std::string::npos);
@@ -94,4 +102,12 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
     EXPECT_NE(message("[LocalizationExperiment]\nsingw_per_frame=sometimes\n").find("singw_per_frame"), std::string::npos);
     EXPECT_NE(message("[MotionModel]\nmodelSelection=magic\n").find("modelSelection"), std::string::npos);
     EXPECT_EQ(message("[LocalizationExperiment]\nparticles_count=10\n"), "");
+    // MRPT's own option structs are checked too: a value MRPT's atoi would read as 0.
+    m = message("[KLD_options]\nKLD_maxSampleSize=abc\n");
+    EXPECT_NE(m.find("my.ini: [KLD_options] KLD_maxSampleSize"), std::string::npos) << m;
+    const std::string bad_beta = message(std::string(pf).replace(pf.find("BETA=0.5"), 8, "BETA=0.5x"));
+    EXPECT_NE(bad_beta.find("BETA"), std::string::npos) << bad_beta;
+    EXPECT_NE(message("[Localization]\nparticles_count=10\n").find("unknown section [Localization]"), std::string::npos);
+    EXPECT_NE(message("particles_count=10\n").find("outside any [section]"), std::string::npos);
+    EXPECT_NE(message("garbage\n").find("neither [section] nor key = value"), std::string::npos);
 }

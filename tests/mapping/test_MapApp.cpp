@@ -167,7 +167,7 @@ TEST(MapApp, BadInputGivesClearErrors) {
     }
     a.rawlog_path = dir + "/Q/sequence.rawlog";
     a.config_path = dir + "/nope.ini";
-    EXPECT_THROW(app.initialize(a), std::runtime_error);
+    EXPECT_THROW(app.initialize(a), std::invalid_argument);  // io::StrictIni: a bad argument
     // Poses that do not overlap the rawlog's time span.
     a.config_path.clear();
     simp::io::writeTum(dir + "/late.tum", {{2e9, {0, 0, 0}}, {2e9 + 1, {0, 0, 0}}});

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/StrictIni.h>
 #include <simp/mapping/MappingOptions.h>
 
 using namespace simp::mapping;
@@ -46,10 +47,11 @@ TEST(MappingOptions, LoadsKeysAndPerClassLists) {
 
 TEST(MappingOptions, BadValuesNameTheKey) {
     auto expectThrowNaming = [](const std::string& text, const std::string& key) {
-        mrpt::config::CConfigFileMemory ini("[mapping]\n" + text + "\n");
         MappingOptions o;
         try {
+            const simp::io::StrictIni ini("[mapping]\n" + text + "\n", "m.ini");
             o.loadFromConfigFile(ini, "mapping");
+            ini.checkUnknown();
             FAIL() << "no exception for " << text;
         } catch (const std::invalid_argument& e) {
             EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
@@ -76,7 +78,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("wall_align_max_enclosed_unknown_m2 = -1", "wall_align_max_enclosed_unknown_m2");
     expectThrowNaming("class_wall_align_max_gap_m = board", "class_wall_align_max_gap_m");
     expectThrowNaming("class_wall_align_max_gap_m = board:-0.1", "board");
-    expectThrowNaming("tau_cots = 0.3", "unknown key 'tau_cots' in section [mapping]");
+    expectThrowNaming("tau_cots = 0.3", "m.ini: [mapping] unknown key 'tau_cots'");
     expectThrowNaming("wall_align_rays = 1", "wall_align_rays");
     expectThrowNaming("wall_align_max_yaw_rad = 2", "wall_align_max_yaw_rad");
     expectThrowNaming("wall_align_max_penetration_m = nan", "wall_align_max_penetration_m");

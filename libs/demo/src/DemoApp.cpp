@@ -3,14 +3,20 @@
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/Plots.h>
 #include <simp/eval/TrajectoryMetrics.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/io/Tum.h>
 #include <simp/localization/LocalizeApp.h>
 #include <simp/mapping/MapApp.h>
+#include <simp/mapping/MappingOptions.h>
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
+#include <simp/sim/Trajectory.h>
 #include <simp/world/World.h>
 
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -22,17 +28,20 @@ namespace fs = std::filesystem;
 namespace simp::demo {
 namespace {
 
-double parseNumber(const std::string& option, const std::string& value) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(value, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != value.size() || !std::isfinite(v))
-        throw std::invalid_argument("option " + option + ": '" + value + "' is not a number");
-    return v;
+/// Command-line ranges: --seed any 63-bit value; --particles as simp-localize's (5e5: seconds per update).
+constexpr std::int64_t kMaxSeed = std::numeric_limits<std::int64_t>::max();
+constexpr std::int64_t kMaxParticles = 500000;
+
+/// The .ini files are checked before the minutes of simulation: the same StrictIni policy the
+/// localization and mapping apps apply (unknown keys/sections, malformed values name file and key).
+void checkLocalizationConfig(const std::string& path) {
+    localization::LocalizeApp probe;  // initialize() reads and checks the .ini, run() is not called
+    probe.initialize({"simp-localize", "--world", ".", "--rawlog", ".", "--out", ".", "--config", path, "--quiet"});
+}
+
+void checkMappingConfig(const std::string& path) {
+    mapping::MappingOptions opts;
+    io::StrictIni(path).loadChecked([&](const io::StrictIni& ini) { opts.loadFromConfigFile(ini, "mapping"); });
 }
 
 void writePng(const std::string& path, const cv::Mat& image) {
@@ -83,36 +92,29 @@ bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out
         } else if (a == "--out") {
             options.out_dir = value();
         } else if (a == "--seed") {
-            options.seed = static_cast<std::uint64_t>(parseNumber(a, value()));
+            options.seed = static_cast<std::uint64_t>(io::parseInteger(value(), "option --seed", 0, kMaxSeed));
         } else if (a == "--rooms") {
-            options.rooms = static_cast<int>(parseNumber(a, value()));
-            if (options.rooms < 2) throw std::invalid_argument("option --rooms: need at least 2 rooms");
+            options.rooms = static_cast<int>(io::parseInteger(value(), "option --rooms", 2, 2000));
         } else if (a == "--particles") {
-            options.particles = static_cast<int>(parseNumber(a, value()));
-            if (options.particles < 10) throw std::invalid_argument("option --particles: need at least 10");
+            options.particles = static_cast<int>(io::parseInteger(value(), "option --particles", 10, kMaxParticles));
         } else if (a == "--method") {
             options.method = value();
             if (options.method != "simp" && options.method != "edt" && options.method != "d" && options.method != "o")
                 throw std::invalid_argument("option --method: '" + options.method + "' is not simp, edt, d or o");
         } else if (a == "--runs") {
-            const int n = static_cast<int>(parseNumber(a, value()));
-            if (n < 1 || n > 10) throw std::invalid_argument("option --runs: must be in [1, 10]");
+            const int n = static_cast<int>(io::parseInteger(value(), "option --runs", 1, 10));
             options.changes.clear();
             for (int k = 0; k < n; ++k) options.changes.push_back(0.15 * k);
         } else if (a == "--mapping-duration") {
-            options.mapping_duration_s = parseNumber(a, value());
-            if (options.mapping_duration_s <= 0) throw std::invalid_argument("option --mapping-duration: must be > 0");
+            options.mapping_duration_s = io::parseNumber(value(), "option --mapping-duration (s)", 1, sim::kMaxDuration_s);
         } else if (a == "--duration") {
-            options.localization_duration_s = parseNumber(a, value());
-            if (options.localization_duration_s <= 0) throw std::invalid_argument("option --duration: must be > 0");
+            options.localization_duration_s = io::parseNumber(value(), "option --duration (s)", 1, sim::kMaxDuration_s);
         } else if (a == "--config") {
             options.localization_config = value();
-            if (!fs::exists(options.localization_config))
-                throw std::invalid_argument("option --config: file '" + options.localization_config + "' does not exist");
+            checkLocalizationConfig(options.localization_config);
         } else if (a == "--mapping-config") {
             options.mapping_config = value();
-            if (!fs::exists(options.mapping_config))
-                throw std::invalid_argument("option --mapping-config: file '" + options.mapping_config + "' does not exist");
+            checkMappingConfig(options.mapping_config);
         } else {
             throw std::invalid_argument("unknown option '" + a + "' (see --help)");
         }

@@ -1,7 +1,8 @@
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
 #include <simp/eval/BatchConfig.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
@@ -30,10 +31,9 @@ std::string methodLabel(const std::string& method) {
     return method;
 }
 
-BatchConfig loadBatchConfig(const std::string& ini_path) {
-    if (!std::filesystem::is_regular_file(ini_path))
-        throw std::runtime_error("batch config '" + ini_path + "': file not found");
-    mrpt::config::CConfigFile ini(ini_path);
+namespace {
+BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
+    const io::StrictIni ini(ini_path);  // exists, is a file, is an .ini
     const auto fail = [&](const std::string& key, const std::string& why) {
         throw std::runtime_error("batch config '" + ini_path + "', key '" + key + "': " + why);
     };
@@ -61,28 +61,35 @@ BatchConfig loadBatchConfig(const std::string& ini_path) {
     for (const auto& m : c.methods)
         if (std::find(kMethods.begin(), kMethods.end(), m) == kMethods.end())
             fail("[batch] methods", "unknown method '" + m + "' (known: simp edt d o)");
-    c.repetitions = ini.read_int(S, "repetitions", c.repetitions);
-    if (c.repetitions < 1) fail("[batch] repetitions", "must be >= 1");
-    c.first_seed = ini.read_int(S, "first_seed", c.first_seed);
-    c.cores = ini.read_int(S, "cores", c.cores);
-    if (c.cores < 1) fail("[batch] cores", "must be >= 1");
+    c.repetitions = static_cast<int>(ini.readInteger(S, "repetitions", c.repetitions, 1, 1000));
+    c.first_seed = static_cast<int>(ini.readInteger(S, "first_seed", c.first_seed, 0, 2147483647));
+    c.cores = static_cast<int>(ini.readInteger(S, "cores", c.cores, 1, 256));
     c.localize_bin = ini.read_string(S, "localize_bin", "");
     c.localize_config = ini.read_string(S, "localize_config", "");
-    c.particles = ini.read_int(S, "particles", 0);
-    if (c.particles < 0) fail("[batch] particles", "must be >= 0");
+    c.particles = static_cast<int>(ini.readInteger(S, "particles", 0, 0, 500000));
     c.extra_args = splitList(ini.read_string(S, "extra_args", ""));
 
     const std::string M = "metrics";
-    c.metrics.max_trans_m = ini.read_double(M, "max_trans_m", c.metrics.max_trans_m);
-    c.metrics.max_rot_rad = ini.read_double(M, "max_rot_rad", c.metrics.max_rot_rad);
-    c.metrics.max_outside_s = ini.read_double(M, "max_outside_s", c.metrics.max_outside_s);
-    c.metrics.convergence_fraction = ini.read_double(M, "convergence_fraction", c.metrics.convergence_fraction);
+    c.metrics.max_trans_m = ini.readNumber(M, "max_trans_m", c.metrics.max_trans_m, 1e-6, 1e3);
+    c.metrics.max_rot_rad = ini.readNumber(M, "max_rot_rad", c.metrics.max_rot_rad, 1e-6, 2 * M_PI);
+    c.metrics.max_outside_s = ini.readNumber(M, "max_outside_s", c.metrics.max_outside_s, 0, 1e6);
+    c.metrics.convergence_fraction = ini.readNumber(M, "convergence_fraction", c.metrics.convergence_fraction, 1e-6, 1);
     if (!(c.metrics.max_trans_m > 0)) fail("[metrics] max_trans_m", "must be > 0");
     if (!(c.metrics.max_rot_rad > 0)) fail("[metrics] max_rot_rad", "must be > 0");
     if (!(c.metrics.max_outside_s >= 0)) fail("[metrics] max_outside_s", "must be >= 0");
     if (!(c.metrics.convergence_fraction > 0 && c.metrics.convergence_fraction <= 1))
         fail("[metrics] convergence_fraction", "must be in (0, 1]");
+    ini.checkUnknown({"map_metrics"});
     return c;
+}
+}  // namespace
+
+BatchConfig loadBatchConfig(const std::string& ini_path) {
+    try {
+        return loadBatchConfigStrict(ini_path);
+    } catch (const std::invalid_argument& e) {  // io::StrictIni's errors: this function throws runtime_error
+        throw std::runtime_error(e.what());
+    }
 }
 
 std::string BatchConfig::dump() const {

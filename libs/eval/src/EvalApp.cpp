@@ -1,4 +1,5 @@
 #include <simp/eval/EvalApp.h>
+#include <simp/io/StrictNumber.h>
 
 #include <cmath>
 #include <set>
@@ -84,20 +85,10 @@ const std::string& EvalApp::required(const std::string& key) const {
     return it->second;
 }
 
-double EvalApp::number(const std::string& key, double fallback) const {
+double EvalApp::number(const std::string& key, double fallback, double lo, double hi) const {
     const auto it = options_.find(key);
     if (it == options_.end()) return fallback;
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(it->second, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != it->second.size() || !std::isfinite(v))
-        throw std::invalid_argument("simp-eval " + command_ + ": option " + key + " expects a number, got '" +
-                                    it->second + "'");
-    return v;
+    return io::parseNumber(it->second, "simp-eval " + command_ + ": option " + key, lo, hi);
 }
 
 int EvalApp::run(std::ostream& out, std::ostream& err) {

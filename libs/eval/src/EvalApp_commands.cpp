@@ -1,5 +1,6 @@
 /// The sub-commands of EvalApp (EvalApp.cpp holds the command-line parsing).
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/eval/BatchConfig.h>
 #include <simp/eval/BatchRunner.h>
 #include <simp/eval/BatchTables.h>
@@ -33,10 +34,12 @@ void requireDir(const std::string& path, const std::string& what) {
     if (!fs::is_directory(path)) throw std::runtime_error(what + " '" + path + "': directory not found");
 }
 
-/// An .ini file given with --config, checked to exist.
-std::unique_ptr<mrpt::config::CConfigFile> openIni(const std::string& path) {
-    requireFile(path, "config");
-    return std::make_unique<mrpt::config::CConfigFile>(path);
+/// Reads [metrics] of a batch.ini (its [batch] and [map_metrics] serve the other commands).
+void loadTrajMetrics(const io::StrictIni& ini, TrajMetricsParams& p) {
+    p.max_trans_m = ini.readNumber("metrics", "max_trans_m", p.max_trans_m, 1e-6, 1e3);
+    p.max_rot_rad = ini.readNumber("metrics", "max_rot_rad", p.max_rot_rad, 1e-6, 2 * M_PI);
+    p.max_outside_s = ini.readNumber("metrics", "max_outside_s", p.max_outside_s, 0, 1e6);
+    p.convergence_fraction = ini.readNumber("metrics", "convergence_fraction", p.convergence_fraction, 1e-6, 1);
 }
 
 void writeText(const fs::path& path, const std::string& text) {
@@ -59,16 +62,13 @@ int EvalApp::runTraj(std::ostream& out) {
     requireFile(est_path, "estimated trajectory");
     TrajMetricsParams p;
     if (has("--config")) {
-        const auto ini = openIni(options_.at("--config"));
-        p.max_trans_m = ini->read_double("metrics", "max_trans_m", p.max_trans_m);
-        p.max_rot_rad = ini->read_double("metrics", "max_rot_rad", p.max_rot_rad);
-        p.max_outside_s = ini->read_double("metrics", "max_outside_s", p.max_outside_s);
-        p.convergence_fraction = ini->read_double("metrics", "convergence_fraction", p.convergence_fraction);
+        const io::StrictIni ini(options_.at("--config"));
+        ini.loadChecked([&](const io::StrictIni& c) { loadTrajMetrics(c, p); }, {"batch", "map_metrics"});
     }
-    p.max_trans_m = number("--max-trans", p.max_trans_m);
-    p.max_rot_rad = number("--max-rot", p.max_rot_rad);
-    p.max_outside_s = number("--max-outside", p.max_outside_s);
-    p.convergence_fraction = number("--fraction", p.convergence_fraction);
+    p.max_trans_m = number("--max-trans", p.max_trans_m, 1e-6, 1e3);
+    p.max_rot_rad = number("--max-rot", p.max_rot_rad, 1e-6, 2 * M_PI);
+    p.max_outside_s = number("--max-outside", p.max_outside_s, 0, 1e6);
+    p.convergence_fraction = number("--fraction", p.convergence_fraction, 1e-6, 1);
     if (!(p.max_trans_m > 0 && p.max_rot_rad > 0 && p.max_outside_s >= 0 && p.convergence_fraction > 0 &&
           p.convergence_fraction <= 1))
         throw std::invalid_argument(
@@ -96,10 +96,15 @@ int EvalApp::runMap(std::ostream& out) {
     requireDir(gt_dir, "ground-truth world");
     requireDir(map_dir, "map world");
     MapMatchParams p;
-    if (has("--config"))
-        p.max_center_dist_m =
-            openIni(options_.at("--config"))->read_double("map_metrics", "max_center_dist_m", p.max_center_dist_m);
-    p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m);
+    if (has("--config")) {
+        const io::StrictIni ini(options_.at("--config"));
+        ini.loadChecked(
+            [&](const io::StrictIni& c) {
+                p.max_center_dist_m = c.readNumber("map_metrics", "max_center_dist_m", p.max_center_dist_m, 1e-6, 100);
+            },
+            {"batch", "metrics"});
+    }
+    p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m, 1e-6, 100);
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("simp-eval map: --max-center-dist must be > 0");
     if (has("--classes")) {
         std::stringstream list(options_.at("--classes"));
@@ -136,10 +141,7 @@ int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
     const std::string ini = required("--config"), out_dir = required("--out");
     BatchConfig cfg = loadBatchConfig(ini);
     if (has("--cores")) {
-        const double cores = number("--cores", cfg.cores);
-        if (cores < 1 || cores != std::floor(cores))
-            throw std::invalid_argument("simp-eval batch: --cores must be a positive integer");
-        cfg.cores = static_cast<int>(cores);
+        cfg.cores = static_cast<int>(io::parseInteger(options_.at("--cores"), "simp-eval batch: option --cores", 1, 256));
     }
     fs::create_directories(out_dir);
     err << "batch configuration (" << ini << "):\n" << cfg.dump();

@@ -1,10 +1,9 @@
 /// \file OctomapExportOptions.cpp
 /// [octomap] keys of the OctoMap export (OctomapExport.h).
 
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <simp/export3d/OctomapExport.h>
-#include <simp/io/IniKeys.h>
+#include <simp/io/StrictIni.h>
 
 #include <cmath>
 #include <filesystem>
@@ -49,17 +48,10 @@ void OctomapExportOptions::validate(const std::string& where) const {
 
 OctomapExportOptions loadOctomapExportOptions(const std::string& ini_path) {
     if (!std::filesystem::is_regular_file(ini_path)) throw std::invalid_argument(ini_path + ": .ini file not found");
-    const mrpt::config::CConfigFile cfg(ini_path);
-    simp::io::checkKnownKeys(cfg, "octomap",
-                             {"resolution_m", "floor_z_m", "ceiling_height_m", "mark_free_space", "door_class",
-                              "export_open_doors", "max_voxels"},
-                             ini_path);
+    // The strict policy of every app: syntax, value types, unknown keys and sections (doc/bad-input.md).
+    const simp::io::StrictIni cfg(ini_path);
     OctomapExportOptions opt;
-    try {
-        opt.loadFromConfigFile(cfg, "octomap");
-    } catch (const std::exception& e) {
-        throw std::invalid_argument(ini_path + ": " + e.what());
-    }
+    cfg.loadChecked([&](const simp::io::StrictIni& c) { opt.loadFromConfigFile(c, "octomap"); });
     return opt;
 }
 

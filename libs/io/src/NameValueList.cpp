@@ -1,6 +1,6 @@
 #include <simp/io/NameValueList.h>
+#include <simp/io/StrictNumber.h>
 
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,17 +27,10 @@ std::vector<std::pair<std::string, double>> parseNameValueList(const std::string
         const std::string name = trimIniValue(entry.substr(0, colon));
         const std::string value_text = trimIniValue(entry.substr(colon + 1));
         if (name.empty()) throw std::invalid_argument(where + ": entry '" + entry + "' has an empty class name");
-        double value = 0;
-        try {
-            std::size_t used = 0;
-            value = std::stod(value_text, &used);
-            if (used != value_text.size()) throw std::invalid_argument("trailing characters");
-        } catch (const std::exception&) {
-            throw std::invalid_argument(where + ": entry '" + entry + "': '" + value_text + "' is not a number");
-        }
-        if (!std::isfinite(value))
+        const auto value = parseFiniteNumber(value_text);
+        if (!value)
             throw std::invalid_argument(where + ": entry '" + entry + "': '" + value_text + "' is not a finite number");
-        out.emplace_back(name, value);
+        out.emplace_back(name, *value);
     }
     return out;
 }

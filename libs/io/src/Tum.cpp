@@ -1,4 +1,5 @@
 #include <mrpt/math/wrap2pi.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/io/Tum.h>
 
 #include <algorithm>
@@ -32,14 +33,11 @@ std::vector<StampedPose2D> readTum(const std::string& path) {
         while (s >> tok) {
             if (n == 8) throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) +
                                                  ": more than 8 columns (expected t x y z qx qy qz qw)");
-            char* end = nullptr;
-            v[n] = std::strtod(tok.c_str(), &end);
-            if (end == tok.c_str() || *end != '\0')
+            const auto x = parseFiniteNumber(tok);
+            if (!x)
                 throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) + ": '" + tok +
-                                         "' is not a number");
-            if (!std::isfinite(v[n]))
-                throw std::runtime_error("TUM file '" + path + "' line " + std::to_string(line_no) +
-                                         ": non-finite value '" + tok + "'");
+                                         "' is not a finite number");
+            v[n] = *x;
             ++n;
         }
         if (n != 8)

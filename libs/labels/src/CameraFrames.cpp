@@ -6,6 +6,8 @@
 #include <simp/obs/InputLimits.h>
 #include <simp/labels/CameraFrames.h>
 
+#include <cmath>
+
 #include <set>
 
 namespace simp::labels {
@@ -69,6 +71,9 @@ std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRi
         if (!(im.K(0, 0) > 0) || !(im.K(1, 1) > 0) || im.K(1, 0) != 0 || im.K(2, 0) != 0 || im.K(2, 1) != 0 || im.K(2, 2) != 1)
             world::failAt(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
         const auto p = detail::numbers(world::requireKey(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
+        for (double x : p)
+            if (!(std::abs(x) <= obs::limits::kMaxCoordinate_m))
+                world::failAt(path, k + ".position_m", "coordinate beyond " + std::to_string(obs::limits::kMaxCoordinate_m) + " m");
         Eigen::Matrix3d R;
         if (o.contains("quaternion_wxyz")) {
             const auto q = detail::numbers(o["quaternion_wxyz"], 4, path, k + ".quaternion_wxyz");

@@ -1,7 +1,8 @@
 /// \file CameraRig.cpp
 #include "JsonUtil.h"
 
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <mrpt/system/string_utils.h>
 #include <simp/obs/InputLimits.h>
 #include <simp/labels/CameraRig.h>
@@ -54,7 +55,7 @@ RigCamera cameraFrom(const std::string& name, const std::function<double(const s
 }
 
 CameraRig loadIni(const std::string& path) {
-    mrpt::config::CConfigFile cfg(path);
+    const io::StrictIni cfg(path);
     const std::string list = cfg.read_string("rig", "cameras", "");
     if (list.empty()) world::failAt(path, "[rig] cameras", "missing: list the camera section names");
     std::vector<std::string> names;
@@ -68,14 +69,13 @@ CameraRig loadIni(const std::string& path) {
                 if (required) world::failAt(path, "[" + name + "] " + key, "missing key");
                 return std::nan("");
             }
-            char* end = nullptr;
-            const double x = std::strtod(v.c_str(), &end);
-            if (end == v.c_str() || *end != '\0' || !std::isfinite(x))
-                world::failAt(path, "[" + name + "] " + key, "expected a number, got '" + v + "'");
-            return x;
+            const auto x = io::parseFiniteNumber(v);
+            if (!x) world::failAt(path, "[" + name + "] " + key, "expected a finite number, got '" + v + "'");
+            return *x;
         };
         rig.cameras.push_back(cameraFrom(name, get, path, "[" + name + "]"));
     }
+    cfg.checkUnknown();
     return rig;
 }
 

@@ -1,6 +1,7 @@
 /// \file Detections2D.cpp
 #include "JsonUtil.h"
 
+#include <simp/io/StrictNumber.h>
 #include <simp/labels/Detections2D.h>
 
 #include <algorithm>
@@ -23,6 +24,7 @@ void check(const Detection2D& d, const std::vector<std::string>& names, const st
     if (std::find(names.begin(), names.end(), d.class_name) == names.end())
         world::failAt(file, where, "unknown class '" + d.class_name + "' (not a class of the world)");
     if (!(d.x_max > d.x_min) || !(d.y_max > d.y_min)) world::failAt(file, where, "expected x_min < x_max and y_min < y_max");
+    if (!(d.score >= 0 && d.score <= 1)) world::failAt(file, where, "score " + std::to_string(d.score) + " must be in [0, 1]");
 }
 
 std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std::string>& names) {
@@ -43,14 +45,14 @@ std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std:
             world::failAt(path, where, "wrong column count " + std::to_string(f.size()) +
                                           " (expected 7: image_id,class,x_min,y_min,x_max,y_max,score)");
         double v[7] = {};
-        for (std::size_t c : {0u, 2u, 3u, 4u, 5u, 6u}) {
-            char* end = nullptr;
-            v[c] = std::strtod(f[c].c_str(), &end);
-            if (f[c].empty() || *end != '\0' || !std::isfinite(v[c]))
-                world::failAt(path, where, "column " + std::to_string(c + 1) + ": expected a number, got '" + f[c] + "'");
+        for (std::size_t c : {2u, 3u, 4u, 5u, 6u}) {
+            const auto x = io::parseFiniteNumber(f[c]);
+            if (!x) world::failAt(path, where, "column " + std::to_string(c + 1) + ": expected a finite number, got '" + f[c] + "'");
+            v[c] = *x;
         }
-        if (std::floor(v[0]) != v[0]) world::failAt(path, where, "column 1: image_id must be an integer");
-        Detection2D d{static_cast<std::int64_t>(v[0]), f[1], v[2], v[3], v[4], v[5], v[6]};
+        const auto image_id = io::parseWholeInteger(f[0]);
+        if (!image_id) world::failAt(path, where, "column 1: image_id must be an integer, got '" + f[0] + "'");
+        Detection2D d{*image_id, f[1], v[2], v[3], v[4], v[5], v[6]};
         check(d, names, path, where);
         out.push_back(d);
     }

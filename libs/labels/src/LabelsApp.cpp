@@ -1,5 +1,6 @@
 /// \file LabelsApp.cpp
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/io/ToolArgs.h>
 #include <simp/labels/LabelsApp.h>
 #include <simp/world/World.h>
@@ -33,15 +34,9 @@ bool LabelsApp::initialize(int argc, const char* const* argv, std::ostream& out)
     if (a.has("poses")) poses_path = a.get("poses"), rig_path = a.get("rig");
     if (a.has("config")) {
         config_path = a.get("config");
-        if (!fs::exists(config_path)) throw std::invalid_argument(config_path + ": config file not found");
-        options.loadFromConfigFile(mrpt::config::CConfigFile(config_path), "simp-labels");
+        io::StrictIni(config_path).loadChecked([&](const io::StrictIni& ini) { options.loadFromConfigFile(ini, "simp-labels"); });
     }
-    if (a.has("iou")) {
-        const std::string v = a.get("iou");
-        char* end = nullptr;
-        options.iou_threshold = std::strtod(v.c_str(), &end);
-        if (v.empty() || *end != '\0') throw std::invalid_argument("--iou: expected a number in (0, 1], got '" + v + "'");
-    }
+    if (a.has("iou")) options.iou_threshold = io::parseNumber(a.get("iou"), "--iou", 0, 1);
     options.validate();
     return true;
 }

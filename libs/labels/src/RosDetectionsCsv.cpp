@@ -1,6 +1,9 @@
 /// \file RosDetectionsCsv.cpp
 #include <simp/labels/Omni3DBox.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/labels/RosDetectionsCsv.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <filesystem>
@@ -26,11 +29,9 @@ std::string trim(const std::string& s) {
 
 double toNumber(const std::string& field, const std::string& file, std::size_t line, std::size_t column) {
     const std::string f = trim(field);
-    char* end = nullptr;
-    const double x = std::strtod(f.c_str(), &end);
-    if (f.empty() || end != f.c_str() + f.size() || !std::isfinite(x))
-        failAt(file, line, "column " + std::to_string(column) + ": expected a finite number, got '" + f + "'");
-    return x;
+    const auto x = io::parseFiniteNumber(f);
+    if (!x) failAt(file, line, "column " + std::to_string(column) + ": expected a finite number, got '" + f + "'");
+    return *x;
 }
 
 }  // namespace
@@ -83,6 +84,13 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
             d.class_id = static_cast<std::uint16_t>(cls);
             try {
                 d.box_in_camera = boxFromOmni3DCorners(corners);
+                // The 8 corners must be a box (1 mm + 0.1 % of its diagonal): anything else is not a detection.
+                const auto refit = omni3DCorners(d.box_in_camera);
+                double off = 0;
+                for (std::size_t c = 0; c < 8; ++c) off = std::max(off, (refit[c] - corners[c]).norm());
+                if (!(off <= 1e-3 + 1e-3 * d.box_in_camera.size.norm()))
+                    throw std::invalid_argument("the 8 corners do not form a box (a corner is " + std::to_string(off) +
+                                                " m off the fitted box)");
                 obs::validateDetection(d, class_names.size(), "object " + std::to_string(k));
             } catch (const std::exception& e) {
                 failAt(path, line_no, std::string("object ") + std::to_string(k) + ": " + e.what());
@@ -91,6 +99,7 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
         }
         set.images.push_back(im);
     }
+    if (set.images.empty()) failAt(path, 0, "no detection rows (an empty file makes a rawlog without frames)");
     return set;
 }
 

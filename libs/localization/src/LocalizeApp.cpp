@@ -9,6 +9,7 @@
 #include <simp/eval/Plots.h>
 #include <simp/eval/Scene3D.h>
 #include <simp/localization/RawlogSequence.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
 
@@ -172,23 +173,25 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
 }
 
 void LocalizeApp::loadConfig() {
-    if (config_path.empty()) return;
-    if (!fs::is_regular_file(config_path)) throw std::invalid_argument("config file '" + config_path + "' does not exist");
-    params.setContent(mrpt::io::file_get_contents(config_path));
-    validateIniKeys(params, config_path);
+    // Every option struct reads through the StrictIni, so its keys are the known ones: no list here.
+    params = std::make_unique<io::StrictIni>(config_path);
+    const std::string file = config_path.empty() ? "(no --config)" : config_path;
     try {
-        options.experiment.loadFromConfigFile(params, "LocalizationExperiment");
-        options.motion.loadFromConfigFile(params, "MotionModel");
-        if (params.sectionExists("PF_options")) options.pf.loadFromConfigFile(params, "PF_options");
-        options.kld.loadFromConfigFile(params, "KLD_options");
-        loadStateParams(params, "State", options.state);
-        loadNoveltyParams(params, "DetectionNovelty", options.novelty);
-        loadResettingParams(params, "SensorResetting", options.resetting);
-        loadSearchParams(params, "HypothesisSearch", options.search);
+        loadLocalizerOptions(*params, options);
         config_notes = reconcilePfOptions(options.pf);
     } catch (const std::exception& e) {
-        throw std::invalid_argument(config_path + ": " + describeError(e));
+        const std::string m = describeError(e);
+        throw std::invalid_argument(m.rfind(file, 0) == 0 ? m : file + ": " + m);
     }
+    try {
+        m_object_map = makeObjectMap(*params, file);
+    } catch (const std::invalid_argument&) {
+        throw;
+    } catch (const std::exception& e) {
+        const std::string m = describeError(e);
+        throw std::invalid_argument(m.find(file) != std::string::npos ? m : file + ": [MetricMap]: " + m);
+    }
+    params->checkUnknown();
     if (options.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfOptimalProposal)
         throw std::invalid_argument(config_path +
                                     ": [PF_options] PF_algorithm = pfOptimalProposal is not implemented by MRPT's "
@@ -214,14 +217,10 @@ void LocalizeApp::run() {
             << truncated_at_entry << " (still being written?): localizing the " << seq.frames.size()
             << " complete frames before it\n";
 
-    std::shared_ptr<maps::CObjectMap> map;
-    try {
-        map = makeObjectMap(params, config_path);
-    } catch (const std::invalid_argument&) {
-        throw;
-    } catch (const std::exception& e) {
-        throw std::invalid_argument(config_path + ": [MetricMap]: " + describeError(e));
-    }
+    // Made by initialize() (so that a bad [MetricMap] is an argument error); a second run() makes it anew.
+    std::shared_ptr<maps::CObjectMap> map = m_object_map;
+    m_object_map.reset();
+    if (!map) map = params ? makeObjectMap(*params, config_path) : std::make_shared<maps::CObjectMap>();
     if (!experiment.sensor_model.empty())
         map->likelihoodOptions.sensor_model = maps::parseSensorModelType(experiment.sensor_model);
     sensor_model_used = maps::toString(map->likelihoodOptions.sensor_model);
@@ -329,7 +328,7 @@ std::array<double, 5> parseInitialPose(const std::string& text) {
         const auto comma = text.find(',', pos);
         const std::string item = text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
         if (count >= 5) throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': more than 5 numbers");
-        const auto x = parseFiniteNumber(item);
+        const auto x = io::parseFiniteNumber(item);
         if (!x)
             throw std::invalid_argument("simp-localize: --initial-pose '" + text + "': '" + item +
                                         "' is not a finite number (expected x,y,phi[,sigma_xy,sigma_phi])");

@@ -1,5 +1,5 @@
 #include <simp/localization/LocalizeOptions.h>
-#include <simp/io/IniKeys.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/localization/Localizer.h>
 
 #include <mrpt/core/bits_math.h>
@@ -22,7 +22,7 @@ double readNumber(const mrpt::config::CConfigFileBase& cfg, const std::string& s
                   double def) {
     if (!cfg.keyExists(section, key)) return def;
     const std::string text = cfg.read_string(section, key, "");
-    const auto v = parseFiniteNumber(text);
+    const auto v = io::parseFiniteNumber(text);
     if (!v) throw std::invalid_argument(where(section, key) + " = '" + text + "' is not a finite number");
     return *v;
 }
@@ -51,18 +51,6 @@ std::string joined(const std::vector<std::string>& v) {
 }
 
 }  // namespace
-
-std::optional<double> parseFiniteNumber(const std::string& text) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(text, &used);
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-    if (used == 0 || text.find_first_not_of(" \t", used) != std::string::npos || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
 
 const std::vector<std::string>& sensorModelNames() {
     static const std::vector<std::string> names{"simp", "edt", "d", "o"};
@@ -300,59 +288,15 @@ std::vector<std::string> reconcilePfOptions(mrpt::bayes::CParticleFilter::TParti
     return notes;
 }
 
-void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file) {
-    using io::checkKnownKeys;
-    checkKnownKeys(cfg, kExperiment,
-                   {"particles_count", "seed", "sensor_model", "free_cells_threshold", "prune_outside_free_space",
-                    "update_min_d_xy", "update_min_d_phi", "keep_skipped_detections", "prune_keeps_weight", "singw_per_frame", "recovery_alpha_slow", "recovery_alpha_fast", "estimate_mode", "cluster_radius_m", "cluster_max_dphi",
-                    "cluster_cell_m", "cluster_phi_bins", "tracking_min_particles", "report_from", "write_particles",
-                    "write_png"},
-                   file);
-    checkKnownKeys(cfg, "State",
-                   {"fit_window", "fit_max_age_s", "fit_min_detections", "explained_ratio", "localized_min_fit",
-                    "localized_min_weight", "localized_max_std_m", "localized_min_updates", "lost_window", "lost_max_fit",
-                    "lost_min_weight", "rival_margin", "rival_lost_margin"},
-                   file);
-    checkKnownKeys(cfg, "DetectionNovelty", {"decorrelation_distance_m", "min_weight", "track_radius_m", "track_timeout_s"},
-                   file);
-    checkKnownKeys(cfg, "SensorResetting",
-                   {"global_fraction", "lost_fraction", "localized_fraction", "uniform_share", "position_std_m",
-                    "heading_std_rad", "square_ratio"},
-                   file);
-    checkKnownKeys(cfg, "HypothesisSearch",
-                   {"enabled", "min_window_detections", "max_candidates", "refine_top", "refine_step_m", "refine_step_rad",
-                    "distinct_distance_m", "distinct_heading_rad", "max_hypotheses", "while_global", "while_localized",
-                    "check_period_s"},
-                   file);
-    checkKnownKeys(cfg, kMotion,
-                   {"modelSelection", "a1", "a2", "a3", "a4", "minStdXY", "minStdPHI", "nParticlesCount",
-                    "alfa1_rot_rot", "alfa2_rot_trans", "alfa3_trans_trans", "alfa4_trans_rot", "additional_std_XY",
-                    "additional_std_phi"},
-                   file);
-    checkKnownKeys(cfg, "PF_options",
-                   {"PF_algorithm", "resamplingMethod", "adaptiveSampleSize", "BETA", "sampleSize", "powFactor",
-                    "max_loglikelihood_dyn_range", "pfAuxFilterOptimal_MaximumSearchSamples",
-                    "pfAuxFilterStandard_FirstStageWeightsMonteCarlo", "pfAuxFilterOptimal_MLE"},
-                   file);
-    // The object map's sections (simp::maps::CObjectMap reads them through MRPT's map loader);
-    // _insertOpts holds the mapping options, which simp-localize does not use.
-    std::vector<std::string> sections;
-    cfg.getAllSections(sections);
-    for (const auto& sec : sections) {
-        if (sec.rfind("MetricMap_semanticObjectMap_", 0) != 0) continue;
-        if (sec.size() > 13 && sec.compare(sec.size() - 13, 13, "_creationOpts") == 0)
-            checkKnownKeys(cfg, sec, {"map_file", "class_names"}, file);
-        else if (sec.size() > 15 && sec.compare(sec.size() - 15, 15, "_likelihoodOpts") == 0)
-            checkKnownKeys(cfg, sec,
-                           {"sensor_model", "eta", "confidence_thresholds", "default_confidence_threshold",
-                            "mp_resolution_m", "mp_min_probability", "skip_classes_without_noise", "edt_sigma_m",
-                            "edt_max_distance_m", "edt_resolution_m", "noise_reference_range_m"},
-                           file);
-    }
-    checkKnownKeys(cfg, "KLD_options",
-                   {"KLD_binSize_XY", "KLD_binSize_PHI", "KLD_delta", "KLD_epsilon", "KLD_minSampleSize",
-                    "KLD_maxSampleSize", "KLD_minSamplesPerBin"},
-                   file);
+void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOptions& options) {
+    options.experiment.loadFromConfigFile(cfg, kExperiment);
+    options.motion.loadFromConfigFile(cfg, kMotion);
+    if (cfg.sectionExists("PF_options")) options.pf.loadFromConfigFile(cfg, "PF_options");
+    options.kld.loadFromConfigFile(cfg, "KLD_options");
+    loadStateParams(cfg, "State", options.state);
+    loadNoveltyParams(cfg, "DetectionNovelty", options.novelty);
+    loadResettingParams(cfg, "SensorResetting", options.resetting);
+    loadSearchParams(cfg, "HypothesisSearch", options.search);
 }
 
 }  // namespace simp::localization

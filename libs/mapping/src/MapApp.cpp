@@ -1,5 +1,5 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
@@ -66,13 +66,13 @@ void MapApp::initialize(const MapAppArgs& args) {
     if (args.out_dir.empty()) throw std::invalid_argument("--out must not be empty");
     MappingOptions opts;
     if (!args.config_path.empty()) {
-        if (!fs::exists(args.config_path)) throw std::runtime_error("config file '" + args.config_path + "' does not exist");
-        mrpt::config::CConfigFile ini(args.config_path);
+        const io::StrictIni ini(args.config_path);  // exists, is a file, is an .ini
         try {
             opts.loadFromConfigFile(ini, "mapping");
         } catch (const std::exception& e) {
             throw std::invalid_argument(args.config_path + ": " + e.what());
         }
+        ini.checkUnknown();
     }
     m_builder = ObjectMapBuilder(opts);
 }

@@ -1,6 +1,6 @@
 #include <mrpt/config/CConfigFileBase.h>
-#include <simp/io/IniKeys.h>
 #include <simp/io/NameValueList.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/mapping/MappingOptions.h>
 
 #include <cmath>
@@ -27,33 +27,24 @@ void requireRange(double v, double lo, double hi, const char* name) {
     }
 }
 
-/// Reads a double key; absent keeps `value`; non-numeric text throws naming the key.
+/// Reads a double key; absent keeps `value`; anything but a whole finite number throws naming the key.
 void readDouble(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, double& value) {
     const std::string text = trimIniValue(c.read_string(section, key, "", false));
     if (text.empty()) return;
-    try {
-        std::size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (trimIniValue(text.substr(used)).size() != 0) throw std::invalid_argument("trailing text");
-        value = v;
-    } catch (const std::exception&) {
-        throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "' is not a number");
-    }
+    const auto v = io::parseFiniteNumber(text);
+    if (!v) throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "' is not a finite number");
+    value = *v;
 }
 
 void readInt(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, int& value) {
-    double v = value;
-    readDouble(c, section, key, v);
-    if (v != std::floor(v)) throw std::invalid_argument(std::string("mapping option [") + section + "] " + key + " must be an integer");
-    value = static_cast<int>(v);
+    const std::string text = trimIniValue(c.read_string(section, key, "", false));
+    if (text.empty()) return;
+    value = static_cast<int>(io::parseInteger(text, "mapping option [" + section + "] " + key, -1000000, 1000000));
 }
 
 void readBool(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, bool& value) {
     const std::string text = trimIniValue(c.read_string(section, key, "", false));
-    if (text == "true" || text == "1") value = true;
-    else if (text == "false" || text == "0") value = false;
-    else if (!text.empty())
-        throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "': expected true or false");
+    if (!text.empty()) value = io::parseBool(text, "mapping option [" + section + "] " + key);
 }
 
 // The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist).
@@ -104,21 +95,7 @@ std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::st
 }
 
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
-    // A misspelt key would silently keep its default.
-    io::checkKnownKeys(c, s, {
-        "trigger_dist_m", "trigger_angle_rad", "tau_cost", "tau_purge", "min_local_detections",
-        "min_local_support", "min_confirmed_matches", "min_confirmed_windows", "merge_duplicates",
-        "duplicate_tau_cost", "duplicate_max_distance_m", "duplicate_center_radius_m",
-        "class_duplicate_center_radius_m", "duplicate_min_overlap", "remove_class_bias",
-        "hide_objects_in_walls", "wall_align", "wall_align_max_enclosed_unknown_m2",
-        "class_wall_align_max_gap_m", "wall_align_max_penetration_m", "wall_align_max_yaw_rad",
-        "wall_align_max_residual_m", "wall_align_rays", "intersecting_boxes_occlude", "cost_covariance_scale",
-        "cost_uses_noise_mean", "default_noise_sigma_m", "truncation_threshold", "max_occluded_fraction",
-        "zbuffer_downscale", "wall_depth_margin_m", "wall_cast_max_m", "near_plane_m", "default_fx_px",
-        "default_fy_px", "default_cx_px", "default_cy_px", "default_min_confidence", "default_min_range_m",
-        "default_max_range_m", "class_min_confidence", "class_min_range_m", "class_max_range_m",
-        "room_update_policy", "room_door_width_m", "room_min_area_m2", "room_search_radius_m"},
-                       "mapping options");
+    // Unknown keys: io::StrictIni::checkUnknown() after loading (the keys read here are the known ones).
     readDouble(c, s, "trigger_dist_m", trigger_dist_m);
     readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
     readDouble(c, s, "tau_cost", tau_cost);

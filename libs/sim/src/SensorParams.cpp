@@ -1,3 +1,4 @@
+#include <simp/io/StrictNumber.h>
 #include <simp/sim/SensorParams.h>
 
 #include <mrpt/system/string_utils.h>
@@ -18,10 +19,7 @@ bool prob(double v) { return v >= 0 && v <= 1; }
 bool readStrictBool(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key, bool def) {
     const std::string text = mrpt::system::trim(cfg.read_string(s, key, ""));
     if (text.empty()) return def;
-    if (text == "true" || text == "1" || text == "yes") return true;
-    if (text == "false" || text == "0" || text == "no") return false;
-    check(false, s, key, "'" + text + "' is not true or false");
-    return def;
+    return io::parseBool(text, "[" + s + "] " + key);
 }
 
 std::vector<double> readPerClass(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
@@ -32,14 +30,9 @@ std::vector<double> readPerClass(const mrpt::config::CConfigFileBase& cfg, const
     std::istringstream is(text);
     std::string tok;
     while (is >> tok) {
-        try {
-            std::size_t used = 0;
-            const double v = std::stod(tok, &used);
-            check(used == tok.size() && std::isfinite(v) && v >= 0, s, key, "'" + tok + "' is not a number >= 0");
-            out.push_back(v);
-        } catch (const std::logic_error&) {
-            check(false, s, key, "'" + tok + "' is not a number");
-        }
+        const auto v = io::parseFiniteNumber(tok);
+        check(v && *v >= 0, s, key, "'" + tok + "' is not a number >= 0");
+        out.push_back(*v);
     }
     check(out.size() == num_classes, s, key,
           "expected " + std::to_string(num_classes) + " values (one per class), got " + std::to_string(out.size()));

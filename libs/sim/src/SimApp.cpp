@@ -1,45 +1,23 @@
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <mrpt/system/filesystem.h>
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/SimApp.h>
+#include <simp/sim/Trajectory.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
 namespace simp::sim {
 namespace {
 
-double parseNumber(const std::string& opt, const std::string& v) {
-    std::size_t used = 0;
-    double d = 0;
-    try {
-        d = std::stod(v, &used);
-    } catch (const std::logic_error&) {
-        used = 0;
-    }
-    if (used != v.size() || !std::isfinite(d))
-        throw std::invalid_argument("option " + opt + ": '" + v + "' is not a finite number");
-    return d;
-}
-
-std::uint64_t parseSeed(const std::string& v) {
-    if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos)
-        throw std::invalid_argument("option --seed: '" + v + "' is not a non-negative integer");
-    try {
-        return std::stoull(v);
-    } catch (const std::out_of_range&) {
-        throw std::invalid_argument("option --seed: '" + v + "' is out of range");
-    }
-}
-
-std::unique_ptr<mrpt::config::CConfigFileBase> openConfig(const std::string& path) {
-    if (path.empty()) return std::make_unique<mrpt::config::CConfigFileMemory>(std::string());
-    if (!mrpt::system::fileExists(path)) throw std::runtime_error("config file '" + path + "' does not exist");
-    return std::make_unique<mrpt::config::CConfigFile>(path);
-}
+/// Command-line ranges (doc/simulator.md): a --seed is any 63-bit value; --rooms and --size-m2 as in
+/// [office]; --duration up to the trajectory's limit; --kidnap-at is checked against the duration later.
+constexpr std::int64_t kMaxSeed = std::numeric_limits<std::int64_t>::max();
 
 }  // namespace
 
@@ -86,20 +64,16 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
         if (i + 1 >= args.size()) throw std::invalid_argument("option " + opt + " needs a value");
         const std::string& v = args[++i];
         if (opt == "--seed") {
-            seed = parseSeed(v);
+            seed = static_cast<std::uint64_t>(io::parseInteger(v, "option --seed", 0, kMaxSeed));
             seed_given = true;
         } else if (opt == "--out") out_dir = v;
         else if (opt == "--config") config_path = v;
         else if (command == "world" && opt == "--builtin") builtin = v;
-        else if (command == "world" && opt == "--size-m2") size_m2 = parseNumber(opt, v);
-        else if (command == "world" && opt == "--rooms") {
-            const double r = parseNumber(opt, v);
-            if (r != std::floor(r) || r < 1) throw std::invalid_argument("option --rooms: '" + v + "' is not a positive integer");
-            rooms = static_cast<int>(r);
-        } else if (command == "sequence" && (opt == "--world" || opt == "--world-in")) world_dir = v;
-        else if (command == "sequence" && opt == "--duration") duration_s = parseNumber(opt, v);
-        else if (command == "sequence" && opt == "--changes") changes = parseNumber(opt, v);
-        else if (command == "sequence" && opt == "--kidnap-at") kidnap_at_s = parseNumber(opt, v);
+        else if (command == "world" && opt == "--size-m2") size_m2 = io::parseNumber(v, "option --size-m2", 1, 1e6);
+        else if (command == "world" && opt == "--rooms") rooms = static_cast<int>(io::parseInteger(v, "option --rooms", 1, 2000)); else if (command == "sequence" && (opt == "--world" || opt == "--world-in")) world_dir = v;
+        else if (command == "sequence" && opt == "--duration") duration_s = io::parseNumber(v, "option --duration", 1e-3, kMaxDuration_s);
+        else if (command == "sequence" && opt == "--changes") changes = io::parseNumber(v, "option --changes", 0, 1);
+        else if (command == "sequence" && opt == "--kidnap-at") kidnap_at_s = io::parseNumber(v, "option --kidnap-at", 0, kMaxDuration_s);
         else throw std::invalid_argument("unknown option '" + opt + "' for command '" + command + "'");
     }
     if (!seed_given) throw std::invalid_argument("option --seed is required");
@@ -120,10 +94,20 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
 }
 
 void SimApp::run(std::ostream& out) {
-    const auto cfg = openConfig(config_path);
+    // Both commands read the whole .ini (one sim.ini serves both), so every key is checked either way.
+    const io::StrictIni cfg(config_path);
+    OfficeParams office;
+    SimParams p;
+    try {
+        office.loadFromConfig(cfg, "office");
+        p.loadFromConfig(cfg);
+    } catch (const std::invalid_argument& e) {
+        const std::string m = e.what();
+        throw std::invalid_argument(m.rfind(cfg.name(), 0) == 0 ? m : cfg.name() + ": " + m);
+    }
+    cfg.checkUnknown();
     if (command == "world") {
-        OfficeParams p;
-        p.loadFromConfig(*cfg, "office");
+        OfficeParams& p = office;
         if (rooms) {
             p.rooms = *rooms;
             p.size_m2 = 0;
@@ -139,8 +123,6 @@ void SimApp::run(std::ostream& out) {
             << counts[3] << " receptions, " << counts[4] << " corridors, " << g.world.objects.objects.size() << " objects\n";
         return;
     }
-    SimParams p;
-    p.loadFromConfig(*cfg);
     if (duration_s) p.duration_s = *duration_s;
     if (changes) p.changes.fraction = *changes;
     if (coverage) p.trajectory.coverage = true;

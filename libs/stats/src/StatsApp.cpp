@@ -1,5 +1,6 @@
 /// \file StatsApp.cpp
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/io/ToolArgs.h>
 #include <simp/stats/NoiseModelFiles.h>
 #include <simp/stats/NoisePlot.h>
@@ -37,20 +38,9 @@ bool StatsApp::initialize(int argc, const char* const* argv, std::ostream& out) 
     rawlog_path = a.get("rawlog"), poses_path = a.get("poses"), world_path = a.get("world"), out_dir = a.get("out");
     if (a.has("config")) config_path = a.get("config");
     std::optional<double> delta;
-    if (a.has("delta")) {
-        const std::string& v = a.get("delta");
-        try {
-            std::size_t used = 0;
-            delta = std::stod(v, &used);
-            if (used != v.size()) throw std::invalid_argument(v);
-        } catch (const std::exception&) {
-            throw std::invalid_argument("--delta: expected a number of metres, got '" + v + "'");
-        }
-    }
-    if (!config_path.empty()) {
-        if (!fs::exists(config_path)) throw std::invalid_argument(config_path + ": config file not found");
-        options.loadFromConfigFile(mrpt::config::CConfigFile(config_path), "simp-stats");
-    }
+    if (a.has("delta")) delta = io::parseNumber(a.get("delta"), "--delta (m)", 1e-6, 100);
+    if (!config_path.empty())
+        io::StrictIni(config_path).loadChecked([&](const io::StrictIni& ini) { options.loadFromConfigFile(ini, "simp-stats"); });
     if (delta) options.delta_m = *delta;
     options.validate();
     return true;

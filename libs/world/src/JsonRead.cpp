@@ -16,6 +16,7 @@ void failAt(const std::string& file, const std::string& key, const std::string& 
 
 json readJsonFile(const std::string& path) {
     if (!std::filesystem::exists(path)) failAt(path, "", "file not found");
+    if (!std::filesystem::is_regular_file(path)) failAt(path, "", "not a regular file");
     std::ifstream in(path);
     if (!in) failAt(path, "", "cannot open for reading");
     try {

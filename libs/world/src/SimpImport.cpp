@@ -1,7 +1,8 @@
 /// \file SimpImport.cpp
 /// The authors' map format -> a world (doc/import-export.md, "How the numbers are read").
 
-#include <mrpt/config/CConfigFile.h>
+#include <simp/io/StrictIni.h>
+#include <simp/io/StrictNumber.h>
 #include <simp/geometry/Box3D.h>
 #include <simp/world/JsonRead.h>
 #include <simp/world/NoiseFrame.h>
@@ -41,15 +42,9 @@ std::vector<std::string> splitCsv(const std::string& line) {
 }
 
 double parseCsvNumber(const std::string& s, const std::string& file, const std::string& key) {
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(s, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != s.size() || !std::isfinite(v)) failAt(file, key, "expected a finite number, got '" + s + "'");
-    return v;
+    const auto v = io::parseFiniteNumber(s);
+    if (!v) failAt(file, key, "expected a finite number, got '" + s + "'");
+    return *v;
 }
 
 /// class_noise.csv: header category,mx,my,sx,sy,b; a row with only the category = not modelled.
@@ -160,17 +155,13 @@ void classMeansFromObjects(ObjectMapData& map) {
 }  // namespace
 
 SimpImportOptions loadSimpImportOptions(const std::string& ini_path) {
-    if (!fs::exists(ini_path)) throw std::runtime_error(ini_path + ": file not found");
-    mrpt::config::CConfigFile ini(ini_path);
+    const io::StrictIni ini(ini_path);  // exists, is a file, is an .ini
     SimpImportOptions opt;
     std::vector<std::string> keys;
     ini.getAllKeys("class_heights", keys);
-    for (const auto& k : keys) {
-        const double h = ini.read_double("class_heights", k, -1.0);
-        if (!(h > 0) || !std::isfinite(h))
-            throw std::runtime_error(ini_path + ": [class_heights] " + k + ": expected a positive height (m)");
-        opt.class_height_m[k] = h;
-    }
+    // Any class name is a key of [class_heights]; a height is in (0, 100] m (the box side limit).
+    for (const auto& k : keys) opt.class_height_m[k] = ini.readNumber("class_heights", k, 0, 1e-6, 100);
+    ini.checkUnknown();
     return opt;
 }
 

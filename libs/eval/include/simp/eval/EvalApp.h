@@ -35,7 +35,8 @@ private:
 
     bool has(const std::string& key) const { return options_.count(key) > 0; }
     const std::string& required(const std::string& key) const;
-    double number(const std::string& key, double fallback) const;
+    /// The option's value as a finite number in [lo, hi] (io::parseNumber), or `fallback` when absent.
+    double number(const std::string& key, double fallback, double lo, double hi) const;
 
     int runTraj(std::ostream& out);
     int runMap(std::ostream& out);

@@ -5,8 +5,9 @@
 /// (as mrpt::apps::MonteCarloLocalization_App).
 
 #include <mrpt/bayes/CParticleFilter.h>
-#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/StrictIni.h>
 #include <simp/io/Tum.h>
+#include <simp/maps/CObjectMap.h>
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/Localizer.h>
 #include <simp/localization/ParticleSummary.h>
@@ -42,7 +43,7 @@ class LocalizeApp {
     /// @name Parameters (filled by initialize(); may be changed before run())
     /// @{
     std::string world_dir, rawlog_path, out_dir, config_path;
-    mrpt::config::CConfigFileMemory params;  ///< the .ini content (empty without --config)
+    std::unique_ptr<io::StrictIni> params;   ///< the .ini (empty without --config)
     LocalizerOptions options;                ///< everything the .ini sets
     /// --initial-pose: x, y (m), phi (rad), sigma_xy (m), sigma_phi (rad); tracking from it
     std::optional<std::array<double, 5>> initial_pose;
@@ -69,6 +70,7 @@ class LocalizeApp {
     void loadConfig();
     /// trajectory.png and the --3dscene file from the results of run().
     void writePictures(const world::World& world, const std::vector<io::StampedPose2D>& ground_truth) const;
+    std::shared_ptr<maps::CObjectMap> m_object_map;  ///< made from the .ini by initialize()
 };
 
 /// The object map's likelihood options of simp-localize without --config: config_ini/simp.ini's

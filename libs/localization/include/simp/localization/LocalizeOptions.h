@@ -88,12 +88,11 @@ void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::strin
 /// Returns one note per change for the log (empty: nothing changed).
 std::vector<std::string> reconcilePfOptions(mrpt::bayes::CParticleFilter::TParticleFilterOptions& pf);
 
-/// Checks every project section and MRPT's [PF_options] / [KLD_options] of `cfg` for unknown keys.
-void validateIniKeys(const mrpt::config::CConfigFileBase& cfg, const std::string& file);
-
-/// The whole of `text` as a finite number (blanks after it allowed), or nullopt: the one strict number
-/// parser of the .ini keys and the command line of simp-localize.
-std::optional<double> parseFiniteNumber(const std::string& text);
+struct LocalizerOptions;
+/// Every section simp-localize's options read ([LocalizationExperiment], [MotionModel], [PF_options],
+/// [KLD_options], [State], [DetectionNovelty], [SensorResetting]); read through io::StrictIni, whose
+/// checkUnknown() afterwards names every key none of them asked for.
+void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOptions& options);
 
 /// Sensor model names accepted by --method and sensor_model.
 const std::vector<std::string>& sensorModelNames();
