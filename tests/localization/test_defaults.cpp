@@ -197,7 +197,7 @@ TEST(LocalizeDefaults, CompiledInDefaultsEqualSimpIniFieldByField) {
     expectSame(a.options.novelty, b.options.novelty);
     expectSame(a.options.resetting, b.options.resetting);
     expectSame(a.options.search, b.options.search);
-    expectSame(makeObjectMap(a.params, "")->likelihoodOptions, makeObjectMap(b.params, kSimpIni)->likelihoodOptions);
+    expectSame(makeObjectMap(*a.params, "")->likelihoodOptions, makeObjectMap(*b.params, kSimpIni)->likelihoodOptions);
     EXPECT_TRUE(a.config_notes.empty());
     EXPECT_TRUE(b.config_notes.empty());
 }

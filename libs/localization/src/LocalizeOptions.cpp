@@ -20,8 +20,9 @@ std::string where(const std::string& section, const std::string& key) { return "
 /// Strictly parsed number: the whole value must be a finite number.
 double readNumber(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key,
                   double def) {
-    if (!cfg.keyExists(section, key)) return def;
+    // Read before the presence test: io::StrictIni learns the key as known from the read.
     const std::string text = cfg.read_string(section, key, "");
+    if (!cfg.keyExists(section, key)) return def;
     const auto v = io::parseFiniteNumber(text);
     if (!v) throw std::invalid_argument(where(section, key) + " = '" + text + "' is not a finite number");
     return *v;
@@ -36,8 +37,8 @@ double readPositive(const mrpt::config::CConfigFileBase& cfg, const std::string&
 }
 
 bool readBool(const mrpt::config::CConfigFileBase& cfg, const std::string& section, const std::string& key, bool def) {
+    std::string t = cfg.read_string(section, key, "");  // read first: see readNumber
     if (!cfg.keyExists(section, key)) return def;
-    std::string t = cfg.read_string(section, key, "");
     std::transform(t.begin(), t.end(), t.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     if (t == "true" || t == "1" || t == "yes") return true;
     if (t == "false" || t == "0" || t == "no") return false;
