@@ -1,5 +1,7 @@
 // The OctoMap export (libs/export3d): read back with OctoMap and with MRPT's COctoMap, occupancy at a
 // wall, in a box, in free space and in unknown space; class colours; resolution and size limits.
+#include "common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/maps/COctoMap.h>
 #include <octomap/AbstractOcTree.h>
@@ -24,14 +26,7 @@ int stateAt(const octomap::OcTree& t, double x, double y, double z) {
     return t.isNodeOccupied(n) ? 1 : 0;
 }
 
-std::string messageOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
+using simp_test::errorOf;
 
 }  // namespace
 
@@ -83,7 +78,7 @@ TEST(OctomapExport, MrptCOctoMapOfTheExportedFiles) {
         EXPECT_LT(p, 0.5);
         EXPECT_FALSE(map.getPointOccupancy(3.5f, 2.5f, 1.0f, p)) << name;  // unknown
     }
-    EXPECT_NE(messageOf([&] { simp::export3d::toMrptOctoMap(dir + "/world.bt", 100); }).find("voxels"),
+    EXPECT_NE(errorOf([&] { simp::export3d::toMrptOctoMap(dir + "/world.bt", 100); }).find("voxels"),
               std::string::npos);
 }
 
@@ -130,19 +125,19 @@ TEST(OctomapExport, RefusesBadResolutionSizeAndExtension) {
     const std::string dir = simp_test::freshDir();
     OctomapExportOptions opt;
     opt.resolution_m = 0.001;
-    EXPECT_NE(messageOf([&] { writeWorldOctomap(w, opt, dir + "/a.bt"); }).find("resolution_m"), std::string::npos);
+    EXPECT_NE(errorOf([&] { writeWorldOctomap(w, opt, dir + "/a.bt"); }).find("resolution_m"), std::string::npos);
     opt.resolution_m = 0.05;
     // 4 x 3 m of known cells, 50 layers of 0.05 m: 4400 cells x 50 = 220000 voxels + the boxes.
     const double estimate = simp::export3d::estimateVoxels(w, opt);
     EXPECT_NEAR(estimate, 4400.0 * 50.0, 0.05 * 4400.0 * 50.0);
     opt.max_voxels = 1000;
-    const std::string msg = messageOf([&] { writeWorldOctomap(w, opt, dir + "/b.bt"); });
+    const std::string msg = errorOf([&] { writeWorldOctomap(w, opt, dir + "/b.bt"); });
     EXPECT_NE(msg.find("max_voxels"), std::string::npos) << msg;
     EXPECT_FALSE(std::filesystem::exists(dir + "/b.bt"));
     opt.max_voxels = 2e7;
-    EXPECT_NE(messageOf([&] { writeWorldOctomap(w, opt, dir + "/c.ply"); }).find(".bt"), std::string::npos);
+    EXPECT_NE(errorOf([&] { writeWorldOctomap(w, opt, dir + "/c.ply"); }).find(".bt"), std::string::npos);
     opt.ceiling_height_m = -1;
-    EXPECT_NE(messageOf([&] { writeWorldOctomap(w, opt, dir + "/d.bt"); }).find("ceiling_height_m"), std::string::npos);
+    EXPECT_NE(errorOf([&] { writeWorldOctomap(w, opt, dir + "/d.bt"); }).find("ceiling_height_m"), std::string::npos);
 }
 
 TEST(OctomapExport, IniKeysAreReadAndCheckedByName) {
@@ -157,13 +152,13 @@ TEST(OctomapExport, IniKeysAreReadAndCheckedByName) {
     EXPECT_DOUBLE_EQ(opt.ceiling_height_m, 3.0);
     EXPECT_FALSE(opt.mark_free_space);
     std::ofstream(dir + "/typo.ini") << "[octomap]\nresolution = 0.1\n";
-    const std::string typo = messageOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/typo.ini"); });
+    const std::string typo = errorOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/typo.ini"); });
     EXPECT_NE(typo.find("typo.ini"), std::string::npos) << typo;
     EXPECT_NE(typo.find("'resolution'"), std::string::npos) << typo;
     std::ofstream(dir + "/bad.ini") << "[octomap]\nresolution_m = 5\n";
-    const std::string bad = messageOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/bad.ini"); });
+    const std::string bad = errorOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/bad.ini"); });
     EXPECT_NE(bad.find("bad.ini"), std::string::npos) << bad;
     EXPECT_NE(bad.find("resolution_m"), std::string::npos) << bad;
-    EXPECT_NE(messageOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/none.ini"); }).find("none.ini"),
+    EXPECT_NE(errorOf([&] { simp::export3d::loadOctomapExportOptions(dir + "/none.ini"); }).find("none.ini"),
               std::string::npos);
 }

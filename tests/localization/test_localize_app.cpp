@@ -2,6 +2,8 @@
 
 #include "TestUtil.h"
 
+#include "common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 #include <mrpt/opengl/CPointCloud.h>
 #include <mrpt/opengl/CSetOfLines.h>
@@ -58,15 +60,7 @@ void setArg(std::vector<std::string>& args, const std::string& name, const std::
     args.insert(args.end(), {name, value});
 }
 
-template <class F>
-std::string errorOf(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
+using simp_test::errorOf;
 
 }  // namespace
 
