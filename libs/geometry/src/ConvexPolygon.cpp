@@ -143,7 +143,10 @@ ConvexPolygon convexHull(const Eigen::Vector2d* points, std::size_t count) {
 
 ConvexPolygon makeRectangle(const Eigen::Vector2d& center, double lx, double ly, double yaw_rad) {
     const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
-    const Eigen::Vector2d ax(c * lx / 2, s * lx / 2), ay(-s * ly / 2, c * ly / 2);
+    return parallelogram(center, Eigen::Vector2d(c * lx / 2, s * lx / 2), Eigen::Vector2d(-s * ly / 2, c * ly / 2));
+}
+
+ConvexPolygon parallelogram(const Eigen::Vector2d& center, const Eigen::Vector2d& ax, const Eigen::Vector2d& ay) {
     ConvexPolygon r;
     r.push(center - ax - ay);
     r.push(center + ax - ay);

@@ -48,13 +48,7 @@ void clipAxis(const ClipBuffer& in, double h, ClipBuffer& out) {
 }  // namespace
 
 ConvexPolygon OrientedRect::polygon() const {
-    const Eigen::Vector2d ax(c * hx, s * hx), ay(-s * hy, c * hy);
-    ConvexPolygon r;
-    r.push(center - ax - ay);
-    r.push(center + ax - ay);
-    r.push(center + ax + ay);
-    r.push(center - ax + ay);
-    return r;
+    return parallelogram(center, Eigen::Vector2d(c * hx, s * hx), Eigen::Vector2d(-s * hy, c * hy));
 }
 
 std::optional<OrientedRect> asRectangle(const ConvexPolygon& p, double rel_tol) {

@@ -37,6 +37,10 @@ private:
 /// \throw std::length_error when count > kMaxVertices.
 ConvexPolygon convexHull(const Eigen::Vector2d* points, std::size_t count);
 
+/// Parallelogram centred at `center` with half-axes `ax`, `ay`: corners -ax-ay, +ax-ay, +ax+ay, -ax+ay
+/// (counter-clockwise when ay is ax turned left).
+ConvexPolygon parallelogram(const Eigen::Vector2d& center, const Eigen::Vector2d& ax, const Eigen::Vector2d& ay);
+
 /// Rectangle centred at `center` with side lengths (lx, ly) rotated by yaw.
 ConvexPolygon makeRectangle(const Eigen::Vector2d& center, double lx, double ly, double yaw_rad);
 
