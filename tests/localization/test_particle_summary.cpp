@@ -4,6 +4,9 @@
 #include <simp/localization/ParticleSummary.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 using namespace simp::localization;
 
@@ -54,4 +57,40 @@ TEST(ParticleSummary, HeadingMeanWrapsAroundPi) {
     EXPECT_NEAR(std::abs(s.estimate.phi), M_PI, 0.03);
     EXPECT_NEAR(std::abs(s.mean.phi), M_PI, 0.03);
     EXPECT_NEAR(s.cluster_weight, 1.0, 1e-9);
+}
+
+TEST(ParticleSummary, FarApartModesGiveTheSameClusterAsNearOnes) {
+    // Two modes 3 km apart: the particles' bounding box is too large for the dense bin array, so the
+    // peak comes from the sorted bins. The result must be the one of the same set with the modes 6 m
+    // apart (dense array), moved by the same offset: the peak search does not depend on the path.
+    const auto near = twoModes(600, {2, 2, 0.5}, 400, {8, 2, 0.5});
+    const auto far = twoModes(600, {2, 2, 0.5}, 400, {3002, 2, 0.5});
+    const auto s_near = summarizeParticles(near, ExperimentOptions());
+    const auto s_far = summarizeParticles(far, ExperimentOptions());
+    EXPECT_DOUBLE_EQ(s_far.estimate.x, s_near.estimate.x);
+    EXPECT_DOUBLE_EQ(s_far.estimate.y, s_near.estimate.y);
+    EXPECT_DOUBLE_EQ(s_far.cluster_weight, 0.6);
+    // The lighter far mode wins when it is heavier, on the sorted path too.
+    auto heavy_far = far;
+    for (std::size_t i = 600; i < 1000; ++i) heavy_far.m_particles[i].log_w = std::log(2.0);
+    EXPECT_NEAR(summarizeParticles(heavy_far, ExperimentOptions()).estimate.x, 3002.0, 0.02);
+}
+
+TEST(ParticleSummary, EqualModesGoToTheSmallestBin) {
+    // Ties between bins go to the smallest (x, y, heading) bin, whatever the particle order.
+    auto pdf = twoModes(500, {8, 2, 0}, 500, {2, 2, 0});
+    EXPECT_NEAR(summarizeParticles(pdf, ExperimentOptions()).estimate.x, 2.0, 0.02);
+    pdf = twoModes(500, {2, 2, 0}, 500, {8, 2, 0});
+    EXPECT_NEAR(summarizeParticles(pdf, ExperimentOptions()).estimate.x, 2.0, 0.02);
+}
+
+TEST(ParticleSummary, NonFinitePoseIsAClearError) {
+    auto pdf = twoModes(10, {2, 2, 0}, 10, {8, 2, 0});
+    pdf.m_particles[3].d.x = std::numeric_limits<double>::infinity();
+    try {
+        summarizeParticles(pdf, ExperimentOptions());
+        FAIL() << "expected an error";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("particle 3"), std::string::npos) << e.what();
+    }
 }

@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
-#include <tuple>
+#include <string>
 #include <vector>
 
 namespace simp::localization {
@@ -13,41 +15,140 @@ namespace {
 
 /// Normalized linear weights of the particles (sum = 1), from their log-weights.
 std::vector<double> normalizedWeights(const mrpt::poses::CPosePDFParticles& pdf) {
-    const std::size_t n = pdf.size();
+    const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
     std::vector<double> w(n);
     double max_lw = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < n; ++i) max_lw = std::max(max_lw, pdf.getW(i));
+    for (std::size_t i = 0; i < n; ++i) max_lw = std::max(max_lw, pdf.m_particles[i].log_w);
     double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += (w[i] = std::exp(pdf.getW(i) - max_lw));
+    for (std::size_t i = 0; i < n; ++i) sum += (w[i] = std::exp(pdf.m_particles[i].log_w - max_lw));
     for (auto& x : w) x /= sum;
     return w;
 }
 
+/// Weighted circular mean; the caller passes each particle's cos/sin of phi, computed once per summary.
 struct WeightedMean {
     double sw = 0, sx = 0, sy = 0, sc = 0, ss = 0;
-    void add(const mrpt::math::TPose2D& p, double w) {
+    void add(const mrpt::math::TPose2D& p, double cos_phi, double sin_phi, double w) {
         sw += w;
         sx += w * p.x;
         sy += w * p.y;
-        sc += w * std::cos(p.phi);
-        ss += w * std::sin(p.phi);
+        sc += w * cos_phi;
+        ss += w * sin_phi;
     }
     mrpt::math::TPose2D pose() const { return {sx / sw, sy / sw, std::atan2(ss, sc)}; }
 };
 
+/// The particles' bins on the cluster grid: x and y cells counted from the smallest occupied one,
+/// heading bin in [0, nb).
+struct ParticleBins {
+    std::vector<long> x, y;
+    std::vector<int> phi;
+    long min_x = 0, min_y = 0, span_x = 0, span_y = 0;  ///< span: number of cells from min to max
+    int nb = 1;
+};
+
+struct PeakBin {
+    long x = 0, y = 0;
+    int phi = 0;
+};
+
+/// Visits the 3x3x3 neighbourhood of (x, y, phi) (heading wraps around; with fewer than 3 heading bins
+/// only the same heading bin) in a fixed order, so that every peak finder sums the same numbers in
+/// the same order.
+template <typename Weight>
+double neighbourhoodWeight(const ParticleBins& b, long x, long y, int phi, const Weight& weight) {
+    double sum = 0;
+    for (long dx = -1; dx <= 1; ++dx)
+        for (long dy = -1; dy <= 1; ++dy)
+            for (int dp = (b.nb >= 3 ? -1 : 0); dp <= (b.nb >= 3 ? 1 : 0); ++dp) {
+                const long u = x + dx - b.min_x, v = y + dy - b.min_y;
+                if (u < 0 || v < 0 || u >= b.span_x || v >= b.span_y) continue;  // no particle there
+                sum += weight(u, v, (phi + dp + b.nb) % b.nb);
+            }
+    return sum;
+}
+
+/// Peak on a dense array over the occupied cells' bounding box (the usual case: a few thousand bins);
+/// the array is visited in (x, y, phi) order, the order of the sorted bins below.
+PeakBin peakOnDenseGrid(const ParticleBins& b, const std::vector<double>& w) {
+    const auto index = [&](long u, long v, int phi) {
+        return (static_cast<std::size_t>(u) * static_cast<std::size_t>(b.span_y) + static_cast<std::size_t>(v)) *
+                   static_cast<std::size_t>(b.nb) + static_cast<std::size_t>(phi);
+    };
+    std::vector<double> grid(static_cast<std::size_t>(b.span_x * b.span_y) * static_cast<std::size_t>(b.nb), 0.0);
+    std::vector<std::uint8_t> occupied(grid.size(), 0);
+    for (std::size_t i = 0; i < w.size(); ++i) {
+        const std::size_t k = index(b.x[i] - b.min_x, b.y[i] - b.min_y, b.phi[i]);
+        grid[k] += w[i];  // index order, as the sorted bins sum
+        occupied[k] = 1;
+    }
+    const auto weight = [&](long u, long v, int phi) { return grid[index(u, v, phi)]; };
+    PeakBin best;
+    double best_w = -1;
+    for (long u = 0; u < b.span_x; ++u)
+        for (long v = 0; v < b.span_y; ++v)
+            for (int phi = 0; phi < b.nb; ++phi) {
+                if (!occupied[index(u, v, phi)]) continue;
+                const double sum = neighbourhoodWeight(b, b.min_x + u, b.min_y + v, phi, weight);
+                if (sum > best_w) best_w = sum, best = {b.min_x + u, b.min_y + v, phi};
+            }
+    return best;
+}
+
+/// Peak over a sorted vector of occupied bins (particles spread over a bounding box too large for an
+/// array): keys packed in one integer whose order is that of (x, y, phi), 27 bits per cell index.
+PeakBin peakOnSortedBins(const ParticleBins& b, const std::vector<double>& w) {
+    constexpr int kPhiBits = 9, kCellBits = 27;  // cluster_phi_bins <= 360
+    const auto pack = [&](long u, long v, int phi) {
+        return (static_cast<std::uint64_t>(u) << (kCellBits + kPhiBits)) | (static_cast<std::uint64_t>(v) << kPhiBits) |
+               static_cast<std::uint64_t>(phi);
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> order(w.size());  // (bin, particle): ties by index
+    for (std::size_t i = 0; i < w.size(); ++i)
+        order[i] = {pack(b.x[i] - b.min_x, b.y[i] - b.min_y, b.phi[i]), static_cast<std::uint32_t>(i)};
+    std::sort(order.begin(), order.end());
+    std::vector<std::pair<std::uint64_t, double>> bins;
+    for (const auto& [key, i] : order) {
+        if (bins.empty() || bins.back().first != key) bins.emplace_back(key, 0.0);
+        bins.back().second += w[i];
+    }
+    const auto weight = [&](long u, long v, int phi) {
+        const std::uint64_t k = pack(u, v, phi);
+        const auto it = std::lower_bound(bins.begin(), bins.end(), k,
+                                         [](const std::pair<std::uint64_t, double>& e, std::uint64_t key) { return e.first < key; });
+        return it != bins.end() && it->first == k ? it->second : 0.0;
+    };
+    PeakBin best;
+    double best_w = -1;
+    for (const auto& [k, bw] : bins) {
+        (void)bw;
+        const long x = b.min_x + static_cast<long>(k >> (kCellBits + kPhiBits));
+        const long y = b.min_y + static_cast<long>((k >> kPhiBits) & ((1UL << kCellBits) - 1));
+        const int phi = static_cast<int>(k & ((1U << kPhiBits) - 1));
+        const double sum = neighbourhoodWeight(b, x, y, phi, weight);
+        if (sum > best_w) best_w = sum, best = {x, y, phi};
+    }
+    return best;
+}
+
 }  // namespace
 
 ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, const ExperimentOptions& opts) {
-    const std::size_t n = pdf.size();
+    const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
     if (n == 0) throw std::invalid_argument("summarizeParticles: empty particle set");
     const std::vector<double> w = normalizedWeights(pdf);
     ParticleSummary s;
     s.particle_count = n;
 
+    std::vector<double> cos_phi(n), sin_phi(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        cos_phi[i] = std::cos(pdf.m_particles[i].d.phi);
+        sin_phi[i] = std::sin(pdf.m_particles[i].d.phi);
+    }
     WeightedMean all;
     double sum_w2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        all.add(pdf.m_particles[i].d, w[i]);
+        all.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
         sum_w2 += w[i] * w[i];
     }
     s.ess = 1.0 / sum_w2;
@@ -65,50 +166,46 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         return s;
     }
 
-    // Peak bin: most weight in its 3x3x3 neighbourhood (heading bins wrap around). The bins are a
-    // sorted vector (one sort instead of a node per bin: this runs at every update); ties go to
-    // the smallest key, as with an ordered map.
-    const int nb = opts.cluster_phi_bins;
-    using Key = std::tuple<long, long, int>;
-    auto keyOf = [&](const mrpt::math::TPose2D& p) {
-        const double u = (mrpt::math::wrapTo2Pi(p.phi)) / (2 * M_PI) * nb;
-        return Key{static_cast<long>(std::floor(p.x / opts.cluster_cell_m)),
-                   static_cast<long>(std::floor(p.y / opts.cluster_cell_m)), std::min(nb - 1, static_cast<int>(u))};
-    };
-    std::vector<Key> keys(n);
-    for (std::size_t i = 0; i < n; ++i) keys[i] = keyOf(pdf.m_particles[i].d);
-    std::vector<std::size_t> order(n);
-    for (std::size_t i = 0; i < n; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b] || (keys[a] == keys[b] && a < b); });
-    std::vector<std::pair<Key, double>> bins;
-    for (const std::size_t i : order) {
-        if (bins.empty() || bins.back().first != keys[i]) bins.emplace_back(keys[i], 0.0);
-        bins.back().second += w[i];
+    // Peak bin: most weight in its 3x3x3 neighbourhood (heading bins wrap around); a bin's weight sums
+    // its particles in index order; ties go to the smallest (x, y, phi). This runs at every update:
+    // a dense array when the particles' bounding box is small, else sorted packed keys (same result).
+    ParticleBins b;
+    b.nb = opts.cluster_phi_bins;
+    b.x.resize(n);
+    b.y.resize(n);
+    b.phi.resize(n);
+    b.min_x = b.min_y = std::numeric_limits<long>::max();
+    long max_x = std::numeric_limits<long>::min(), max_y = std::numeric_limits<long>::min();
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& p = pdf.m_particles[i].d;
+        const double u = (mrpt::math::wrapTo2Pi(p.phi)) / (2 * M_PI) * b.nb;
+        const double fx = std::floor(p.x / opts.cluster_cell_m), fy = std::floor(p.y / opts.cluster_cell_m);
+        if (!(std::abs(fx) < 1e15 && std::abs(fy) < 1e15))
+            throw std::runtime_error("summarizeParticles: particle " + std::to_string(i) + " at (" + std::to_string(p.x) +
+                                     ", " + std::to_string(p.y) + ") m is not a finite place on the cluster grid");
+        b.x[i] = static_cast<long>(fx);
+        b.y[i] = static_cast<long>(fy);
+        b.phi[i] = std::min(b.nb - 1, static_cast<int>(u));
+        b.min_x = std::min(b.min_x, b.x[i]);
+        b.min_y = std::min(b.min_y, b.y[i]);
+        max_x = std::max(max_x, b.x[i]);
+        max_y = std::max(max_y, b.y[i]);
     }
-    auto binWeight = [&](const Key& k) {
-        const auto it = std::lower_bound(bins.begin(), bins.end(), k,
-                                         [](const std::pair<Key, double>& b, const Key& key) { return b.first < key; });
-        return it != bins.end() && it->first == k ? it->second : 0.0;
-    };
-    Key best{};
-    double best_w = -1;
-    for (const auto& [k, bw] : bins) {
-        (void)bw;
-        double sum = 0;
-        for (long dx = -1; dx <= 1; ++dx)
-            for (long dy = -1; dy <= 1; ++dy)
-                for (int dp = (nb >= 3 ? -1 : 0); dp <= (nb >= 3 ? 1 : 0); ++dp)
-                    sum += binWeight({std::get<0>(k) + dx, std::get<1>(k) + dy, (std::get<2>(k) + dp + nb) % nb});
-        if (sum > best_w) best_w = sum, best = k;
-    }
+    b.span_x = max_x - b.min_x + 1;
+    b.span_y = max_y - b.min_y + 1;
+    if (b.span_x > (1L << 27) || b.span_y > (1L << 27))
+        throw std::runtime_error("summarizeParticles: the particles span more than 2^27 cells of cluster_cell_m = " +
+                                 std::to_string(opts.cluster_cell_m) + " m");
+    const double dense_cells = static_cast<double>(b.span_x) * static_cast<double>(b.span_y) * b.nb;
+    const PeakBin best = dense_cells <= std::max(16.0 * static_cast<double>(n), 65536.0) ? peakOnDenseGrid(b, w)
+                                                                                          : peakOnSortedBins(b, w);
     // Seed pose: weighted mean of the peak bin's neighbourhood.
     WeightedMean seed;
     for (std::size_t i = 0; i < n; ++i) {
-        const Key& k = keys[i];
-        const long dx = std::get<0>(k) - std::get<0>(best), dy = std::get<1>(k) - std::get<1>(best);
-        const int dp = ((std::get<2>(k) - std::get<2>(best)) % nb + nb) % nb;
-        if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == nb - 1 || nb < 3))
-            seed.add(pdf.m_particles[i].d, w[i]);
+        const long dx = b.x[i] - best.x, dy = b.y[i] - best.y;
+        const int dp = ((b.phi[i] - best.phi) % b.nb + b.nb) % b.nb;
+        if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == b.nb - 1 || b.nb < 3))
+            seed.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
     }
     const mrpt::math::TPose2D peak = seed.pose();
     // Cluster: particles near the peak pose.
@@ -118,7 +215,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         const auto& p = pdf.m_particles[i].d;
         const double dx = p.x - peak.x, dy = p.y - peak.y;
         if (dx * dx + dy * dy <= r2 && std::abs(mrpt::math::wrapToPi(p.phi - peak.phi)) <= opts.cluster_max_dphi)
-            cluster.add(p, w[i]);
+            cluster.add(p, cos_phi[i], sin_phi[i], w[i]);
     }
     if (cluster.sw > 0) {
         s.estimate = cluster.pose();
