@@ -56,3 +56,33 @@ TEST(DemoResultsTable, FailedRunsShowNoConvergenceOrAte) {
     EXPECT_EQ(r3[4], "—");
     EXPECT_EQ(r3[6], "90.0");
 }
+
+TEST(DemoKidnapTable, AFailedKidnapShowsWhatHappenedAndNoAte) {
+    simp::demo::DemoKidnapRun ok;
+    ok.kidnap_at_s = 45;
+    ok.lost_after_s = 1.2;
+    ok.relocalized_after_s = 14.5;
+    ok.after_ate_trans_m = 0.0912;
+    ok.after_ate_rot_rad = 0.0301;
+    ok.success = true;
+    simp::demo::DemoKidnapRun never = ok;
+    never.name = "K2";
+    never.relocalized_after_s = -1;
+    never.success = false;
+    const std::string table = simp::demo::kidnapTable({ok, never});
+    const auto r1 = rowOf(table, "K1");
+    ASSERT_EQ(r1.size(), 8u) << table;
+    EXPECT_EQ(r1[1], "15 %");
+    EXPECT_EQ(r1[2], "45.0");
+    EXPECT_EQ(r1[3], "1.2");
+    EXPECT_EQ(r1[4], "14.5");
+    EXPECT_EQ(r1[5], "0.091");
+    EXPECT_EQ(r1[6], "0.030");
+    EXPECT_EQ(r1[7], "yes");
+    const auto r2 = rowOf(table, "K2");
+    ASSERT_EQ(r2.size(), 8u) << table;
+    EXPECT_EQ(r2[3], "1.2");
+    EXPECT_EQ(r2[4], "—");
+    EXPECT_EQ(r2[5], "—");  // an ATE after a failed relocalization is not a result
+    EXPECT_EQ(r2[7], "no");
+}

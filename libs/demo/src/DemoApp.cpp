@@ -1,5 +1,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <simp/demo/DemoApp.h>
+#include <simp/eval/KidnapMetrics.h>
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/Plots.h>
 #include <simp/eval/TrajectoryMetrics.h>
@@ -71,12 +72,13 @@ std::string DemoOptions::defaultMappingConfig() { return projectFile("config_ini
 std::string DemoApp::usage() {
     return "Usage: simp-demo [--out DIR] [--seed S] [--rooms N] [--particles N] [--method simp|edt|d|o]\n"
            "                 [--runs N] [--mapping-duration SEC] [--duration SEC]\n"
-           "                 [--config LOCALIZATION.ini] [--mapping-config MAPPING.ini]\n"
+           "                 [--config LOCALIZATION.ini] [--mapping-config MAPPING.ini] [--no-kidnap]\n"
            "Runs the whole pipeline on the built-in office world (no external data): builds the world,\n"
            "simulates a mapping run, builds the object map from posed detections, simulates localization\n"
            "runs with long-term changes (0 %, 15 %, 30 %, ...), localizes globally in the built map with the\n"
            "paper's sensor model, prints success / convergence time / ATE per run and writes PNGs to DIR\n"
-           "(default demo_out).\n";
+           "(default demo_out). A kidnapped run K1 (15 % changes, teleported at half its duration) follows\n"
+           "unless --no-kidnap: lost within 5 s, localized again within 20 s, then tracked.\n";
 }
 
 bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out) {
@@ -112,6 +114,8 @@ bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out
         } else if (a == "--config") {
             options.localization_config = value();
             checkLocalizationConfig(options.localization_config);
+        } else if (a == "--no-kidnap") {
+            options.kidnap_run = false;
         } else if (a == "--mapping-config") {
             options.mapping_config = value();
             checkMappingConfig(options.mapping_config);
@@ -130,7 +134,7 @@ void DemoApp::run(std::ostream& out) {
     const std::string map_dir = (root / "map").string();
 
     // 1. The built-in office: the ground truth.
-    out << "[1/5] Generating the built-in office (" << options.rooms << " rooms, seed " << options.seed << ")\n";
+    out << "[1/6] Generating the built-in office (" << options.rooms << " rooms, seed " << options.seed << ")\n";
     sim::OfficeParams office;
     office.rooms = options.rooms;
     const world::World truth = sim::generateOffice(office, options.seed);
@@ -138,7 +142,7 @@ void DemoApp::run(std::ostream& out) {
     out << "      " << truth.objects.objects.size() << " objects -> " << world_dir << "\n";
 
     // 2. Mapping run with known poses, then the paper's mapping.
-    out << "[2/5] Simulating a mapping run (" << options.mapping_duration_s << " s) and building the object map\n";
+    out << "[2/6] Simulating a mapping run (" << options.mapping_duration_s << " s) and building the object map\n";
     sim::SimParams mapping_run;
     mapping_run.duration_s = options.mapping_duration_s;
     mapping_run.trajectory.coverage = true;  // a mapping run visits every room
@@ -169,7 +173,7 @@ void DemoApp::run(std::ostream& out) {
     map_iou = map_metrics.iou;
     map_precision = map_metrics.precision;
     map_recall = map_metrics.recall;
-    out << std::fixed << std::setprecision(2) << "[3/5] Built map vs ground truth: IoU " << map_iou << ", precision "
+    out << std::fixed << std::setprecision(2) << "[3/6] Built map vs ground truth: IoU " << map_iou << ", precision "
         << map_precision << ", recall " << map_recall << "\n";
     writePng((root / "object_map.png").string(), eval::drawObjectMap(built));
     writePng((root / "map_evaluation.png").string(), eval::drawMapEvaluation(truth, built, map_metrics));
@@ -180,7 +184,7 @@ void DemoApp::run(std::ostream& out) {
         DemoRun r;
         r.name = "R" + std::to_string(k + 1);
         r.changes = options.changes[k];
-        out << "[4/5] " << r.name << ": simulating " << options.localization_duration_s << " s with "
+        out << "[4/6] " << r.name << ": simulating " << options.localization_duration_s << " s with "
             << static_cast<int>(100 * r.changes + 0.5) << " % changed objects, localizing with "
             << options.particles << " particles (" << options.method << ")\n";
         sim::SimParams loc_run;
@@ -191,20 +195,7 @@ void DemoApp::run(std::ostream& out) {
         sim::simulateSequence(truth, loc_run, options.seed + 2000 + k, seq);
 
         const std::string est_dir = (root / ("loc_" + r.name)).string();
-        localization::LocalizeApp loc;
-        std::vector<std::string> loc_args{"simp-localize", "--world", map_dir, "--rawlog", seq + "/sequence.rawlog", "--out", est_dir,
-                                          "--method", options.method, "--particles", std::to_string(options.particles),
-                                          "--seed", std::to_string(options.seed + 3000 + k)};
-        if (!options.localization_config.empty()) {
-            loc_args.push_back("--config");
-            loc_args.push_back(options.localization_config);
-        }
-        loc.initialize(loc_args);
-        loc.show_progress = false;
-        std::ostringstream loc_log;
-        loc.log = &loc_log;
-        loc.run();
-
+        localize(map_dir, seq, est_dir, options.seed + 3000 + k);
         const auto gt = io::readTum(seq + "/groundtruth.tum");
         const auto est = io::readTum(est_dir + "/estimate.tum");
         const eval::TrajMetricsParams params;
@@ -225,16 +216,102 @@ void DemoApp::run(std::ostream& out) {
         runs.push_back(r);
     }
 
-    // 5. The table.
-    const std::string table = resultsTable(runs);
+    // 5. A kidnapped robot.
+    kidnap_runs.clear();
+    if (options.kidnap_run) kidnap_runs.push_back(runKidnapped(root, map_dir, truth, out));
+
+    // 6. The tables.
+    std::string table = resultsTable(runs);
+    if (!kidnap_runs.empty()) table += "\nKidnapped robot:\n\n" + kidnapTable(kidnap_runs);
     std::ofstream((root / "results.md").string())
         << "# simp-demo results\n\nBuilt map vs ground truth: IoU " << map_iou << ", precision " << map_precision
         << ", recall " << map_recall << "\n\n"
         << table;
-    out << "[5/5] Results (also in " << (root / "results.md").string() << ")\n\n" << table << "\n";
+    out << "[6/6] Results (also in " << (root / "results.md").string() << ")\n\n" << table << "\n";
     out << "PNGs: " << (root / "object_map.png").string() << ", " << (root / "map_evaluation.png").string()
         << ", " << (root / "R1_trajectory.png").string() << " ...\n";
     out << "Done in " << std::setprecision(1) << total.seconds() << " s.\n";
+}
+
+localization::LocalizeApp DemoApp::localize(const std::string& map_dir, const std::string& seq_dir,
+                                            const std::string& est_dir, std::uint64_t seed) const {
+    localization::LocalizeApp loc;
+    std::vector<std::string> args{"simp-localize", "--world", map_dir, "--rawlog", seq_dir + "/sequence.rawlog", "--out", est_dir,
+                                  "--method", options.method, "--particles", std::to_string(options.particles),
+                                  "--seed", std::to_string(seed)};
+    if (!options.localization_config.empty()) {
+        args.push_back("--config");
+        args.push_back(options.localization_config);
+    }
+    loc.initialize(args);
+    loc.show_progress = false;
+    std::ostringstream log;
+    loc.log = &log;
+    loc.run();
+    loc.log = nullptr;
+    return loc;
+}
+
+DemoKidnapRun DemoApp::runKidnapped(const fs::path& root, const std::string& map_dir, const world::World& truth,
+                                    std::ostream& out) const {
+    DemoKidnapRun r;
+    r.kidnap_at_s = 0.5 * options.localization_duration_s;
+    out << "[5/6] " << r.name << ": simulating " << options.localization_duration_s << " s with "
+        << static_cast<int>(100 * r.changes + 0.5) << " % changed objects and a kidnap at " << r.kidnap_at_s
+        << " s, localizing\n";
+    sim::SimParams run;
+    run.duration_s = options.localization_duration_s;
+    run.progress = false;
+    run.changes.fraction = r.changes;
+    run.kidnap_at_s = r.kidnap_at_s;
+    const std::string seq = (root / ("seq_" + r.name)).string();
+    const auto summary = sim::simulateSequence(truth, run, options.seed + 2500, seq);
+    const auto loc = localize(map_dir, seq, (root / ("loc_" + r.name)).string(), options.seed + 3500);
+    if (!summary.kidnap) return r;  // no pose qualified for the teleport (tiny worlds): a failed run
+    std::vector<eval::StateSample> states;
+    for (const auto& s : loc.steps) {
+        eval::StateSample e;
+        e.t_s = s.t_s;
+        e.estimate = s.estimate;
+        e.state = s.state == localization::LocalizationState::Localized ? eval::StateSample::State::Localized
+                  : s.state == localization::LocalizationState::Lost    ? eval::StateSample::State::Lost
+                                                                        : eval::StateSample::State::Global;
+        states.push_back(e);
+    }
+    const auto gt = io::readTum(seq + "/groundtruth.tum");
+    const auto m = eval::evaluateKidnap(gt, states, loc.estimate, summary.kidnap->t_s);
+    r.lost_after_s = m.lost_after_s.value_or(-1.0);
+    r.relocalized_after_s = m.relocalized_after_s.value_or(-1.0);
+    if (m.after && m.after->success) {
+        r.after_ate_trans_m = m.after->ate_trans_m.value_or(-1.0);
+        r.after_ate_rot_rad = m.after->ate_rot_rad.value_or(-1.0);
+    }
+    r.success = m.success;
+    if (!loc.estimate.empty()) {
+        const auto whole = eval::evaluateTrajectory(gt, loc.estimate, eval::TrajMetricsParams());
+        writePng((root / (r.name + "_trajectory.png")).string(),
+                 eval::drawTrajectoryFigure(gt, loc.estimate, whole, eval::TrajMetricsParams(), nullptr));
+    }
+    return r;
+}
+
+std::string kidnapTable(const std::vector<DemoKidnapRun>& runs) {
+    std::ostringstream s;
+    s << std::fixed;
+    s << "| run | changed objects | kidnap at (s) | lost after (s) | localized again after (s) | ATE after (m) | ATE after (rad) | success |\n";
+    s << "|---|---|---|---|---|---|---|---|\n";
+    const auto cell = [](double v, int decimals) {
+        if (v < 0) return std::string("—");
+        std::ostringstream c;
+        c << std::fixed << std::setprecision(decimals) << v;
+        return c.str();
+    };
+    for (const auto& r : runs)
+        s << "| " << r.name << " | " << cell(100 * r.changes, 0) << " % | " << cell(r.kidnap_at_s, 1) << " | "
+          << cell(r.lost_after_s, 1) << " | " << cell(r.relocalized_after_s, 1) << " | "
+          << cell(r.success ? r.after_ate_trans_m : -1, 3) << " | " << cell(r.success ? r.after_ate_rot_rad : -1, 3)
+          << " | " << (r.success ? "yes" : "no") << " |\n";
+    return s.str();
 }
 
 std::string resultsTable(const std::vector<DemoRun>& runs) {

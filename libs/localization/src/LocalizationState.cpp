@@ -1,6 +1,7 @@
 #include <simp/localization/LocalizationState.h>
 
 #include <cmath>
+#include <vector>
 
 namespace simp::localization {
 
@@ -16,8 +17,12 @@ std::string toString(LocalizationState s) {
 void FitWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
                     const mrpt::poses::CPose2D& odometry_pose, double t_s) {
     for (std::size_t k = 0; k < obs->size(); ++k) {
-        if (map.usableClassOf(*obs, k) < 0) continue;
-        m_items.push_back({obs, k, odometry_pose, t_s});
+        const int cls = map.usableClassOf(*obs, k);
+        if (cls < 0) continue;
+        const auto c = obs->boxInRobot(k).center;
+        const double co = std::cos(odometry_pose.phi()), so = std::sin(odometry_pose.phi());
+        m_items.push_back({obs, k, odometry_pose, t_s, cls, odometry_pose.x() + co * c.x() - so * c.y(),
+                           odometry_pose.y() + so * c.x() + co * c.y()});
         if (m_items.size() > m_params.fit_window) m_items.pop_front();
     }
 }
@@ -27,15 +32,37 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
     while (!m_items.empty() && t_now_s - m_items.front().t_s > m_params.fit_max_age_s) m_items.pop_front();
     const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
     Fit fit;
-    std::size_t explained = 0, recent_explained = 0;
-    for (auto it = m_items.rbegin(); it != m_items.rend(); ++it) {  // newest first
+    // Newest first. With object_radius_m > 0 a detection joins the (newest) object of its class
+    // within the radius, and an object is explained when any of its detections is.
+    struct Object {
+        int map_class;
+        double x, y;
+        bool explained;
+    };
+    std::vector<Object> objects;
+    const double r2 = m_params.object_radius_m * m_params.object_radius_m;
+    for (auto it = m_items.rbegin(); it != m_items.rend(); ++it) {
         const mrpt::poses::CPose2D world_T_frame = estimate + (it->odometry_pose - odometry_now);
         const auto log_p = map.detectionLogLikelihood(*it->obs, it->k, world_T_frame.asTPose());
         if (!log_p) continue;
         const bool ok = *log_p >= log_explained;
+        Object* same = nullptr;
+        if (m_params.object_radius_m > 0)
+            for (auto& o : objects)
+                if (o.map_class == it->map_class && (o.x - it->odo_x) * (o.x - it->odo_x) + (o.y - it->odo_y) * (o.y - it->odo_y) <= r2) {
+                    same = &o;
+                    break;
+                }
+        if (same)
+            same->explained = same->explained || ok;
+        else
+            objects.push_back({it->map_class, it->odo_x, it->odo_y, ok});
+    }
+    std::size_t explained = 0, recent_explained = 0;
+    for (const auto& o : objects) {
         ++fit.scored;
-        explained += ok;
-        if (fit.recent_scored < m_params.lost_window) ++fit.recent_scored, recent_explained += ok;
+        explained += o.explained;
+        if (fit.recent_scored < m_params.lost_window) ++fit.recent_scored, recent_explained += o.explained;
     }
     if (fit.scored > 0) fit.fraction = static_cast<double>(explained) / static_cast<double>(fit.scored);
     if (fit.recent_scored > 0)

@@ -170,6 +170,7 @@ void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string
     p.lost_min_weight = readFraction(cfg, s, "lost_min_weight", p.lost_min_weight);
     p.rival_margin = readPositive(cfg, s, "rival_margin", p.rival_margin, true);
     p.rival_lost_margin = readPositive(cfg, s, "rival_lost_margin", p.rival_lost_margin, false);
+    p.object_radius_m = readPositive(cfg, s, "object_radius_m", p.object_radius_m, true);
     if (p.lost_max_fit >= p.localized_min_fit)
         throw std::invalid_argument(where(s, "lost_max_fit") + " must be smaller than localized_min_fit");
 }

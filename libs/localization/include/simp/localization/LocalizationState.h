@@ -44,6 +44,11 @@ struct StateParams {
     /// `rival_margin` (a place that looks alike is not a place the robot can act on).
     double rival_lost_margin = 6.0;
     double rival_margin = 2.0;
+    /// > 0: the window counts objects, not detections: detections of one class whose centres (odometry
+    /// frame) lie within this distance (m) are one object, explained when any of its detections is.
+    /// A moved object seen ten times is then one unexplained object, not ten (a false `lost`), and a
+    /// biased object seen ten times is one vote in the fit. 0: every detection counts (the first round).
+    double object_radius_m = 0.0;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.
@@ -56,7 +61,7 @@ class FitWindow {
              const mrpt::poses::CPose2D& odometry_pose, double t_s);
     struct Fit {
         double fraction = 0;        ///< explained / scored, in [0, 1]
-        std::size_t scored = 0;     ///< detections in the window
+        std::size_t scored = 0;     ///< detections (objects, with object_radius_m > 0) in the window
         double recent_fraction = 0; ///< the same over the last lost_window of them
         std::size_t recent_scored = 0;
         /// Window log-likelihood of the best distinct pose minus the estimate's (nats); NaN when
@@ -80,6 +85,8 @@ class FitWindow {
         std::size_t k = 0;
         mrpt::poses::CPose2D odometry_pose;
         double t_s = 0;
+        int map_class = -1;
+        double odo_x = 0, odo_y = 0;  ///< the detection's centre in the odometry frame (m)
     };
     StateParams m_params;
     std::deque<Item> m_items;
