@@ -201,3 +201,30 @@ TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
     EXPECT_GE(localized_after, 0.0) << "never localized again";
     EXPECT_LE(localized_after, 20.0);
 }
+
+TEST(FitWindow, CountsObjectsOnceWithAnObjectRadius) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo(10, 10, 0);
+    StateParams per_detection;
+    StateParams per_object;
+    per_object.object_radius_m = 1.0;
+    FitWindow a(per_detection), b(per_object);
+    // Object 0 seen in four frames from the same place, object 1 once.
+    for (int k = 0; k < 4; ++k) {
+        a.add(*map, observe(w, robot, {0}), odo, 0.1 * k);
+        b.add(*map, observe(w, robot, {0}), odo, 0.1 * k);
+    }
+    a.add(*map, observe(w, robot, {1}), odo, 0.5);
+    b.add(*map, observe(w, robot, {1}), odo, 0.5);
+    const auto fa = a.evaluate(*map, mrpt::poses::CPose2D(robot), odo, 0.5);
+    const auto fb = b.evaluate(*map, mrpt::poses::CPose2D(robot), odo, 0.5);
+    EXPECT_EQ(fa.scored, 5u);
+    EXPECT_EQ(fb.scored, 2u);
+    EXPECT_DOUBLE_EQ(fb.fraction, 1.0);
+    // Elsewhere: both objects unexplained, each counted once in the lost test's recent window.
+    const auto wrong = b.evaluate(*map, mrpt::poses::CPose2D(robot) + mrpt::poses::CPose2D(3.0, 2.0, 1.0), odo, 0.5);
+    EXPECT_EQ(wrong.recent_scored, 2u);
+    EXPECT_DOUBLE_EQ(wrong.recent_fraction, 0.0);
+}
