@@ -37,6 +37,7 @@ simp::world::ObjectMapData smallMap() {
     n.cov_m2 << 0.1, 0.0, 0.0, 0.2;
     n.exponent_b = 2.0;
     d.class_noise[0] = n;
+    d.class_noise[1] = n;  // every class modelled: the simp sensor model refuses a class without one
     for (int i = 0; i < 3; ++i) {
         simp::world::MapObject o;
         o.id = i + 1;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/serialization/CArchive.h>
 #include <simp/obs/BoundedArchive.h>
@@ -176,6 +177,54 @@ TEST(HostileObservation, MrptContainerCountsAreGuarded) {
     const std::size_t aheader = 1 + std::strlen("mrpt::obs::CActionCollection") + 1;
     put<std::uint32_t>(a, aheader, 0x40000000u);
     EXPECT_THAT(readError(a), HasSubstr("CActionCollection: element count 1073741824"));
+}
+
+namespace {
+
+/// An action collection with one odometry increment (MRPT's Gaussian motion model), followed by the
+/// frame, as the simulator writes; `model_at` is the offset of the u32 motion-model selection.
+Bytes odometryThenFrame(std::size_t& method_at, std::size_t& model_at) {
+    mrpt::obs::CActionCollection acts;
+    mrpt::obs::CActionRobotMovement2D mv;
+    mv.computeFromOdometry(mrpt::poses::CPose2D(0.05, 0, 0.01), mrpt::obs::CActionRobotMovement2D::TMotionModelOptions());
+    acts.insert(mv);
+    Bytes b = bytesOf(acts);
+    const std::string name = "mrpt::obs::CActionRobotMovement2D";
+    method_at = find(b, name.data(), name.size()) + name.size() + 1;  // after the version byte
+    const std::string pose = "mrpt::poses::CPose2D";
+    model_at = find(b, pose.data(), pose.size()) + pose.size() + 1 + 24 + 1;
+    const Bytes frame = oneDetectionFrame();
+    b.insert(b.end(), frame.begin(), frame.end());
+    return b;
+}
+
+}  // namespace
+
+TEST(HostileObservation, MrptMotionModelsAreGuarded) {
+    // MRPT's CActionRobotMovement2D reader draws a Thrun model's particles, as many as the file
+    // says (32 bytes each: 54 GB from a 1.9 KB rawlog), and segfaults when the estimation method
+    // is not odometry but no pose PDF follows. The guard rejects both before MRPT reads.
+    std::size_t method_at = 0, model_at = 0;
+    const Bytes ok = odometryThenFrame(method_at, model_at);
+    EXPECT_EQ(readError(ok), "");
+    Bytes thrun = ok;
+    put<std::uint32_t>(thrun, model_at, 1u);                       // Thrun
+    put<std::uint32_t>(thrun, model_at + 4 + 24, 0x64c3883cu);     // 1.7e9 particles
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THAT(readError(thrun), HasSubstr("1690535996 Thrun motion-model particles"));
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    Bytes few = thrun;
+    put<std::uint32_t>(few, model_at + 4 + 24, 300u);  // MRPT's default count reads
+    EXPECT_EQ(readError(few), "");
+    Bytes model = ok;
+    put<std::uint32_t>(model, model_at, 0xc8c50000u);
+    EXPECT_THAT(readError(model), HasSubstr("motion model 3368353792 is neither 0 (Gaussian) nor 1 (Thrun)"));
+    Bytes method = ok;
+    put<std::uint32_t>(method, method_at, 0x00800000u);
+    EXPECT_THAT(readError(method), HasSubstr("estimation method 8388608"));
+    Bytes scan = ok;
+    put<std::uint32_t>(scan, method_at, 1u);  // scan matching, but a CPose2D follows
+    EXPECT_THAT(readError(scan), HasSubstr("'mrpt::poses::CPose2D' where a pose PDF belongs"));
 }
 
 TEST(HostileObservation, PlainArchivesStillHaveTheFixedMaxima) {

@@ -6,6 +6,8 @@
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/serialization/CArchive.h>
+#include <new>
+#include <simp/obs/BoundedArchive.h>
 #include <mrpt/system/filesystem.h>
 
 #include <cmath>
@@ -146,28 +148,36 @@ void dispatch(FrameBuilder& builder, const mrpt::serialization::CSerializable::P
 
 RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     if (!mrpt::system::fileExists(path)) throw std::runtime_error("rawlog '" + path + "' does not exist");
+    std::uint64_t size = 0;
+    try {
+        size = obs::uncompressedFileSize(path);
+    } catch (const std::exception& e) {
+        throw std::runtime_error("rawlog " + std::string(e.what()));
+    }
     mrpt::io::CFileGZInputStream in;
     if (!in.open(path)) throw std::runtime_error("rawlog '" + path + "' cannot be opened");
-    auto arch = mrpt::serialization::archiveFrom(in);
+    // Through a BoundedArchive, as simp::obs::readRawlog: counts in the file are checked against the
+    // bytes it still holds, and MRPT's own readers are guarded where they allocate what a file says.
+    obs::BoundedArchive arch(in, size, path);
 
     RawlogSequence seq;
     FrameBuilder builder(seq, path);
-    for (;;) {
+    while (arch.bytesLeft() > 0) {  // a clean end lies between objects
         mrpt::serialization::CSerializable::Ptr obj;
         try {
-            obj = arch.ReadObject();
-        } catch (const mrpt::serialization::CExceptionEOF&) {
-            break;  // a clean end: MRPT raises this only between objects
+            obj = arch.readObjectGuarded();
         } catch (const std::exception& e) {
             // A tail cut short (nothing left after the failed entry) of a file still being written.
-            char probe = 0;
-            if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && in.Read(&probe, 1) == 0) {
+            if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && arch.bytesLeft() == 0) {
                 seq.truncated_at_entry = seq.entries + 1;
                 break;
             }
+            const bool oom = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
             throw std::runtime_error("rawlog '" + path + "' is corrupt or truncated at entry " +
-                                     std::to_string(seq.entries) + ": " + innermostMessage(e));
+                                     std::to_string(seq.entries) + ": " +
+                                     (oom ? std::string("an object claims more memory than available") : innermostMessage(e)));
         }
+        if (!obj) throw std::runtime_error("rawlog '" + path + "' is corrupt at entry " + std::to_string(seq.entries) + ": null object");
         ++seq.entries;
         dispatch(builder, obj);
     }

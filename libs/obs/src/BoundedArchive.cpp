@@ -55,6 +55,74 @@ const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
     return m_peeked;
 }
 
+namespace {
+
+/// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300, and a
+/// file cannot ask for more than this (MRPT 2.5 allocates 32 bytes per particle before any check).
+constexpr std::uint32_t kMaxThrunParticles = 100000;
+/// How far ahead of an action collection its robot movements are looked for (bytes): a collection
+/// holds a few actions of a few hundred bytes.
+constexpr std::size_t kActionScanBytes = 8192;
+
+std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
+    std::uint32_t v = 0;
+    std::memcpy(&v, b.data() + at, 4);  // little endian, as MRPT writes on x86/arm
+    return v;
+}
+
+/// Checks the motion model of a CActionRobotMovement2D whose data (after its version byte) starts
+/// at `at` in `b` (MRPT 2.5, versions 4-7): u32 estimation method (1: a pose PDF object follows,
+/// MRPT's reader segfaults on another class there); for odometry (0) a CPose2D object
+/// (name byte 0x94, 20 name bytes, version 1, three doubles, end flag), u32 model selection
+/// (0 Gaussian, 1 Thrun), six floats, u32 Thrun particle count. Anything it cannot parse is left to
+/// MRPT's reader.
+void checkRobotMovement2D(const std::vector<std::uint8_t>& b, std::size_t at, const std::string& where) {
+    static const std::string pose = std::string(1, '\x94') + "mrpt::poses::CPose2D";
+    static const std::string pdf = "mrpt::poses::CPosePDF";
+    if (at + 4 > b.size()) return;
+    const std::uint32_t method = u32At(b, at);
+    at += 4;
+    if (method > 1)
+        throw std::invalid_argument(where + ": CActionRobotMovement2D estimation method " + std::to_string(method) +
+                                    " is neither 0 (odometry) nor 1 (scan matching) (corrupted file)");
+    if (method == 1) {  // a pose PDF object follows; MRPT 2.5 crashes on any other object there
+        if (at + 1 > b.size()) return;
+        const std::size_t len = b[at] & 0x7f;
+        if (at + 1 + len > b.size()) return;
+        const std::string name(reinterpret_cast<const char*>(b.data() + at + 1), len);
+        if (name.rfind(pdf, 0) != 0)
+            throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + name +
+                                        "' where a pose PDF belongs (corrupted file)");
+        return;
+    }
+    if (at + pose.size() + 1 + 24 + 1 + 4 > b.size() || std::memcmp(b.data() + at, pose.data(), pose.size()) != 0) return;
+    at += pose.size() + 1 + 24 + 1;  // name, version, x y phi, end flag
+    const std::uint32_t model = u32At(b, at);
+    if (model > 1)
+        throw std::invalid_argument(where + ": CActionRobotMovement2D motion model " + std::to_string(model) +
+                                    " is neither 0 (Gaussian) nor 1 (Thrun) (corrupted file)");
+    if (model == 0 || at + 4 + 24 + 4 > b.size()) return;
+    const std::uint32_t particles = u32At(b, at + 4 + 24);
+    if (particles > kMaxThrunParticles)
+        throw std::invalid_argument(where + ": CActionRobotMovement2D asks for " + std::to_string(particles) +
+                                    " Thrun motion-model particles (at most " + std::to_string(kMaxThrunParticles) +
+                                    "; corrupted file)");
+}
+
+}  // namespace
+
+void BoundedArchive::guardMotionModels() {
+    // MRPT's CActionCollection reader deserializes its actions with MRPT's own reader, which a
+    // robot movement asks to draw its Thrun particles: check every robot movement ahead first.
+    static const std::string header = std::string(1, '\xa1') + "mrpt::obs::CActionRobotMovement2D";
+    const auto& b = peek(kActionScanBytes);
+    for (std::size_t at = 0; at + header.size() + 1 <= b.size(); ++at) {
+        if (b[at] != static_cast<std::uint8_t>(header[0]) || std::memcmp(b.data() + at, header.data(), header.size()) != 0) continue;
+        const std::uint8_t version = b[at + header.size()];
+        if (version >= 4 && version <= 7) checkRobotMovement2D(b, at + header.size() + 1, m_description);
+    }
+}
+
 void BoundedArchive::guardCounts(const std::string& class_name, int version) {
     // Offset of the u32 element count in the object's data (MRPT 2.5 serializeFrom).
     std::size_t offset = 0;
@@ -85,6 +153,7 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
         const auto* id = mrpt::rtti::findRegisteredClass(class_name);
         if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
         guardCounts(id->className, static_cast<std::uint8_t>(version));
+        if (std::string(id->className) == "mrpt::obs::CActionCollection") guardMotionModels();
         obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);

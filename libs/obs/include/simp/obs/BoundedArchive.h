@@ -28,7 +28,9 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// Like CArchive::ReadObject(), but first checks the element counts that MRPT's own readers
     /// of CSensoryFrame and CActionCollection resize their vectors to (MRPT 2.5 allocates
     /// 16 bytes per claimed element before reading one: 64 GB from a 4-byte count) against the
-    /// bytes left. \throw std::invalid_argument naming the class and the count.
+    /// bytes left, and the motion models of the robot movements of an action collection (MRPT draws
+    /// a Thrun model's particles, as many as the file says, while reading it).
+    /// \throw std::invalid_argument naming the class and the count.
     mrpt::serialization::CSerializable::Ptr readObjectGuarded();
 
    protected:
@@ -39,6 +41,9 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// Makes the next `n` bytes (fewer at the end) available without consuming them.
     const std::vector<std::uint8_t>& peek(std::size_t n);
     void guardCounts(const std::string& class_name, int version);
+    /// The robot movements of an action collection about to be read: a Thrun motion model asking
+    /// for more than 1e5 particles (MRPT would allocate them all) or an unknown model is an error.
+    void guardMotionModels();
 
     mrpt::io::CStream& m_in;
     std::uint64_t m_size;
