@@ -113,7 +113,8 @@ cv::Mat3b drawErrorOverTimeFigure(const BatchSummary& s, const std::vector<RunEr
         if (!r.t_s.empty()) t_max = std::max(t_max, r.t_s.back());
     for (std::size_t row = 0; row < s.rows.size(); ++row) {
         const cv::Rect area(L::kLeft, static_cast<int>(row) * panel_h + L::kTop, L::kPlotWidth, L::kPanelHeight);
-        drawAxes(img, area, y_max, 2, s.rows[row].label() + ": translation error (m)", "time since start (s)");
+        drawAxes(img, area, y_max, 2, s.rows[row].label() + ": translation error (m; above " + fmt(y_max, 2) + " m drawn at the top)",
+                 "time since start (s)");
         for (double f = 0; f <= 1.0001; f += 0.25)
             text(img, fmt(f * t_max, t_max < 20 ? 1 : 0),
                  {area.x + static_cast<int>(f * area.width) - 8, area.y + area.height + 16}, 0.4);
