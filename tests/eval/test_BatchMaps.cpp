@@ -142,4 +142,5 @@ TEST_F(BatchMapsFixture, MapKeysAreChecked) {
     EXPECT_NE(error("maps = a b c\nmap_ground_truths = g h").find("[batch] map_ground_truths"), std::string::npos);
     EXPECT_NE(error("maps = x/m y/m").find("two entries are named 'm'"), std::string::npos);
     EXPECT_NE(error("maps = a\nmap_names = x/y").find("cannot label"), std::string::npos);
+    EXPECT_EQ(load("maps = out/built/").batchMaps()[0].name, "built");  // a trailing '/' still names it
 }

@@ -78,7 +78,12 @@ std::vector<std::string> labelsOf(const std::vector<std::string>& items, const s
     return out;
 }
 
-std::string dirName(const std::string& dir) { return std::filesystem::path(dir).lexically_normal().filename().string(); }
+/// Last component of a directory path, also when written with a trailing '/' ("demo_out/map/" -> "map").
+std::string dirName(const std::string& dir) {
+    std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+    if (p.filename().empty()) p = p.parent_path();
+    return p.filename().string();
+}
 std::string fileStem(const std::string& file) { return std::filesystem::path(file).stem().string(); }
 
 BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
@@ -99,7 +104,8 @@ BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
         fail("[batch] sequence_names", std::to_string(names.size()) + " names for " + std::to_string(dirs.size()) +
                                            " sequences");
     for (std::size_t i = 0; i < dirs.size(); ++i) {
-        std::string name = names.empty() ? dirName(dirs[i]) : names[i];
+        std::string name = names.empty() ? std::filesystem::path(dirs[i]).lexically_normal().filename().string()
+                                         : names[i];
         if (name.empty()) name = "S" + std::to_string(i + 1);
         for (const auto& s : c.sequences)
             if (s.name == name) fail("[batch] sequences", "two sequences are named '" + name + "' (set sequence_names)");
