@@ -1,18 +1,26 @@
 /// config_ini/batch.ini names the directories the main demo writes: a small simp-demo run (the same
 /// layout as `simp-demo --out demo_out`, the README's demo command) into a temporary root, then every
 /// path of batch.ini, with its `demo_out/` prefix put under that root, is loaded as the batch loads it,
-/// and the batch runs as shipped from a folder laid out like the project root after the demo.
+/// and the batch runs as shipped (simp-eval batch, in-process: paper and robust rows, the built map's
+/// Table I, the figures) from a folder laid out like the project root after the demo.
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <simp/demo/DemoApp.h>
 #include <simp/eval/BatchConfig.h>
+#include <simp/eval/BatchFigures.h>
+#include <simp/eval/Canvas.h>
+#include <simp/eval/Report.h>
 #include <simp/eval/BatchRunner.h>
+#include <simp/eval/EvalApp.h>
 #include <simp/eval/MapMetrics.h>
 #include <simp/io/Tum.h>
 #include <simp/world/World.h>
 
+#include <opencv2/imgcodecs.hpp>
+
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -24,6 +32,21 @@ fs::path underDemoRoot(const std::string& path, const fs::path& root) {
     const std::string prefix = "demo_out/";
     EXPECT_EQ(path.rfind(prefix, 0), 0u) << path << " is not in the demo's output folder";
     return root / path.substr(prefix.size());
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+/// `text` with the line `from` replaced by `to` (the line must be there).
+std::string replaceLine(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find("\n" + from + "\n");
+    EXPECT_NE(at, std::string::npos) << "batch.ini has no line '" << from << "'";
+    if (at != std::string::npos) text.replace(at + 1, from.size(), to);
+    return text;
 }
 
 /// Changes the working directory for its lifetime.
@@ -63,25 +86,75 @@ TEST(DemoBatch, BatchIniNamesTheDirectoriesTheDemoWrites) {
         // 8 s of ground truth at the simulator's 10 Hz.
         EXPECT_GE(simp::io::readTum((q / "groundtruth.tum").string()).size(), 70u) << q;
     }
-    // The localization config is the project's, relative to the project root.
-    EXPECT_TRUE(fs::is_regular_file(fs::path(SIMP_SOURCE_DIR) / cfg.localize_config)) << cfg.localize_config;
+    // The localization configs are the project's, relative to the project root: the paper's filter and
+    // the robust default, as rows side by side (issue #13).
+    const auto variants = cfg.variants();
+    ASSERT_EQ(variants.size(), 2u);
+    EXPECT_EQ(variants[0].name, "paper");
+    EXPECT_EQ(variants[1].name, "robust");
+    for (const auto& v : variants) EXPECT_TRUE(fs::is_regular_file(fs::path(SIMP_SOURCE_DIR) / v.config)) << v.config;
+    // The built map the demo wrote, against the demo's ground truth.
+    ASSERT_EQ(cfg.batchMaps().size(), 1u);
+    EXPECT_TRUE(fs::is_directory(underDemoRoot(cfg.batchMaps()[0].dir, root))) << cfg.batchMaps()[0].dir;
+    EXPECT_TRUE(fs::is_directory(underDemoRoot(cfg.batchMaps()[0].ground_truth, root)));
 
     // The batch itself, paths as shipped, from a folder laid out like the project root after the demo
-    // (demo_out/ and config_ini/); fewer runs and particles than shipped to stay quick.
+    // (demo_out/ and config_ini/); one method, one seed and fewer particles than shipped to stay quick.
     const fs::path project = root.parent_path();
     fs::create_directory_symlink(fs::path(SIMP_SOURCE_DIR) / "config_ini", project / "config_ini");
     WorkingDirectory cd(project);
-    auto quick = simp::eval::loadBatchConfig("config_ini/batch.ini");
-    quick.methods = {"simp", "edt"};
-    quick.repetitions = 1;
-    quick.particles = 300;
-    std::ostringstream progress;
-    const auto records = simp::eval::runBatch(quick, "batch_out", progress, false);  // simp-localize next to this test
-    ASSERT_EQ(records.size(), 6u) << progress.str();
-    for (const auto& r : records) {
-        EXPECT_EQ(r.status, "ok") << r.sequence << " " << r.method << ": " << r.error;
-        EXPECT_NEAR(r.duration_s, 8.0, 0.5) << r.sequence;  // the demo's --duration
-    }
+    std::string quick = readText("config_ini/batch.ini");
+    quick = replaceLine(quick, "methods = simp edt d o", "methods = simp");
+    quick = replaceLine(quick, "repetitions = 5", "repetitions = 1");
+    quick = replaceLine(quick, "particles = 0", "particles = 300");
+    std::ofstream("quick.ini") << quick;
+    simp::eval::EvalApp app;  // simp-localize next to this test, as next to simp-eval
+    const char* argv[] = {"simp-eval", "batch", "--config", "quick.ini", "--out", "batch_out"};
+    app.initialize(6, argv);
+    std::ostringstream out, progress;
+    ASSERT_EQ(app.run(out, progress), 0) << progress.str();
+
+    const std::string runs = readText("batch_out/runs.csv");
+    EXPECT_EQ(std::count(runs.begin(), runs.end(), '\n'), 1 + 6) << runs;  // 3 sequences x 2 configs
+    for (const char* v : {"paper", "robust"})
+        for (const char* q : {"R1", "R2", "R3"}) {
+            const std::string dir = simp::eval::runDir("batch_out", q, "simp", 1, v);
+            EXPECT_TRUE(fs::is_regular_file(dir + "/estimate.tum")) << dir << "\n" << readText(dir + "/localize.log");
+            EXPECT_NE(runs.find(std::string(q) + ",simp,1,ok,"), std::string::npos) << runs;
+        }
+    const std::string tables = readText("batch_out/tables.md");
+    EXPECT_NE(tables.find("| Ours (paper) | GT |"), std::string::npos) << tables;
+    EXPECT_NE(tables.find("| Ours (robust) | GT |"), std::string::npos) << tables;
+    // Table I of the built map: the numbers the demo printed for it (same classes, same matching).
+    const std::string avg = "| built | " + simp::eval::fmt(demo.map_iou, 2) + " | " +
+                            simp::eval::fmt(demo.map_precision, 2) + " | " + simp::eval::fmt(demo.map_recall, 2) + " |";
+    EXPECT_NE(tables.find(avg), std::string::npos) << avg << "\n" << tables;
+    EXPECT_NE(readText("batch_out/maps.csv").find("\nbuilt,\"AVG\","), std::string::npos);
+    // The figures: success per row and sequence, error over time per row (2 rows = 2 panels).
+    using L = simp::eval::BatchFigureLayout;
+    const cv::Mat success = cv::imread("batch_out/success.png");
+    EXPECT_EQ(success.cols, L::kFigureWidth);
+    EXPECT_EQ(success.rows, L::kTop + L::kSuccessHeight + L::kBottom);
+    const cv::Mat errors = cv::imread("batch_out/error_over_time.png");
+    EXPECT_EQ(errors.cols, L::kFigureWidth);
+    EXPECT_EQ(errors.rows, 2 * (L::kTop + L::kPanelHeight + L::kBottom));
+    // Not blank: inside the plots, the error curves of the runs that localized, in their sequence's colour.
+    const cv::Mat3b e3 = errors;
+    int coloured = 0;
+    for (int panel = 0; panel < 2; ++panel)
+        for (int y = 1; y < L::kPanelHeight; ++y)
+            for (int x = 1; x < L::kPlotWidth; ++x)
+                for (int k = 0; k < 3; ++k) {
+                    const auto c = simp::eval::classColor(k);
+                    coloured += e3(panel * (L::kTop + L::kPanelHeight + L::kBottom) + L::kTop + y, L::kLeft + x) ==
+                                cv::Vec3b(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
+                }
+    std::size_t localized = 0;
+    for (const char* v : {"paper", "robust"})
+        for (const char* q : {"R1", "R2", "R3"})
+            localized += fs::file_size(simp::eval::runDir("batch_out", q, "simp", 1, v) + "/estimate.tum") > 0;
+    EXPECT_GT(localized, 0u) << tables;
+    EXPECT_GT(coloured, 100 * static_cast<int>(localized)) << localized << " runs localized";
 }
 
 TEST(DemoBatch, EvalDefaultsEqualBatchIniMetrics) {

@@ -16,6 +16,7 @@ namespace {
 
 struct Job {
     const BatchSequence* seq;
+    BatchVariant variant;
     std::string method;
     int seed;
 };
@@ -36,7 +37,7 @@ void writeJsonAtomically(const nlohmann::json& j, const fs::path& path) {
 
 /// Runs simp-localize (unless resumable) and evaluates its estimate.
 RunRecord executeRun(const BatchConfig& cfg, const std::string& bin, const Job& job, const std::string& out_dir) {
-    const fs::path dir = runDir(out_dir, job.seq->name, job.method, job.seed);
+    const fs::path dir = runDir(out_dir, job.seq->name, job.method, job.seed, job.variant.name);
     const fs::path est = dir / "estimate.tum", result = dir / "result.json";
     if (fs::exists(est) && fs::exists(result)) {
         std::ifstream f(result);
@@ -54,12 +55,13 @@ RunRecord executeRun(const BatchConfig& cfg, const std::string& bin, const Job& 
     RunRecord r;
     r.sequence = job.seq->name;
     r.method = job.method;
+    r.variant = job.variant.name;
     r.seed = job.seed;
     const fs::path log = dir / "localize.log";
     fs::remove(log);
     int code = 0;
     try {
-        code = runProcess(localizeCommand(cfg, bin, *job.seq, job.method, job.seed, dir.string()), log.string());
+        code = runProcess(localizeCommand(cfg, bin, *job.seq, job.variant, job.method, job.seed, dir.string()), log.string());
     } catch (const std::exception& e) {
         r.status = "localize_failed";
         r.error = e.what();
@@ -95,7 +97,8 @@ void drawProgress(std::ostream& out, std::size_t done, std::size_t total, std::s
                   const RunRecord* last) {
     if (!terminal) {
         if (!last) return;
-        out << "[" << done << "/" << total << " runs] " << last->sequence << " " << last->method << " seed "
+        out << "[" << done << "/" << total << " runs] " << last->sequence << " " << last->method
+            << (last->variant.empty() ? "" : " (" + last->variant + ")") << " seed "
             << last->seed << ": " << (last->resumed ? "resumed, " : "") << last->status
             << (last->status == "ok" ? (last->success ? ", success" : ", no success") : "") << "\n";
         out.flush();
@@ -116,6 +119,7 @@ nlohmann::json toJson(const RunRecord& r) {
     const auto opt = [](const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); };
     return {{"sequence", r.sequence},
             {"method", r.method},
+            {"variant", r.variant},
             {"seed", r.seed},
             {"status", r.status},
             {"error", r.error},
@@ -132,6 +136,7 @@ RunRecord runRecordFromJson(const nlohmann::json& j, const std::string& where) {
         RunRecord r;
         r.sequence = j.at("sequence").get<std::string>();
         r.method = j.at("method").get<std::string>();
+        r.variant = j.contains("variant") ? j.at("variant").get<std::string>() : std::string();
         r.seed = j.at("seed").get<int>();
         r.status = j.at("status").get<std::string>();
         r.error = j.at("error").get<std::string>();
@@ -147,16 +152,20 @@ RunRecord runRecordFromJson(const nlohmann::json& j, const std::string& where) {
     }
 }
 
-std::string runDir(const std::string& out_dir, const std::string& sequence, const std::string& method, int seed) {
-    return (fs::path(out_dir) / "runs" / sequence / method / ("seed" + std::to_string(seed))).string();
+std::string runDir(const std::string& out_dir, const std::string& sequence, const std::string& method, int seed,
+                   const std::string& variant) {
+    // an unnamed variant keeps the layout of batches before localize_configs, so they resume
+    const fs::path group = variant.empty() ? fs::path(method) : fs::path(variant) / method;
+    return (fs::path(out_dir) / "runs" / sequence / group / ("seed" + std::to_string(seed))).string();
 }
 
 std::vector<std::string> localizeCommand(const BatchConfig& cfg, const std::string& bin, const BatchSequence& seq,
-                                         const std::string& method, int seed, const std::string& run_dir) {
+                                         const BatchVariant& variant, const std::string& method, int seed,
+                                         const std::string& run_dir) {
     std::vector<std::string> a{bin,      "--world", cfg.world, "--rawlog", (fs::path(seq.dir) / "sequence.rawlog").string(),
                                "--out",  run_dir,   "--method", method,    "--seed",
                                std::to_string(seed)};
-    if (!cfg.localize_config.empty()) a.insert(a.end(), {"--config", cfg.localize_config});
+    if (!variant.config.empty()) a.insert(a.end(), {"--config", variant.config});
     if (cfg.particles > 0) a.insert(a.end(), {"--particles", std::to_string(cfg.particles)});
     a.insert(a.end(), cfg.extra_args.begin(), cfg.extra_args.end());
     return a;
@@ -169,6 +178,11 @@ std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_d
     if (!fs::is_regular_file(bin))
         throw std::runtime_error("simp-localize not found at '" + bin + "' (set [batch] localize_bin)");
     if (!fs::is_directory(cfg.world)) throw std::runtime_error("batch: world directory '" + cfg.world + "' not found");
+    const auto variants = cfg.variants();
+    for (const auto& v : variants)
+        if (!v.config.empty() && !fs::is_regular_file(v.config))
+            throw std::runtime_error("batch: localization config '" + v.config + "'" +
+                                     (v.name.empty() ? "" : " (" + v.name + ")") + " not found");
     for (const auto& s : cfg.sequences)
         for (const char* f : {"groundtruth.tum", "sequence.rawlog"})
             if (!fs::is_regular_file(fs::path(s.dir) / f))
@@ -178,7 +192,8 @@ std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_d
     std::vector<Job> jobs;
     for (const auto& s : cfg.sequences)
         for (const auto& m : cfg.methods)
-            for (int k = 0; k < cfg.repetitions; ++k) jobs.push_back({&s, m, cfg.first_seed + k});
+            for (const auto& v : variants)  // a method's variants side by side, as the tables' rows
+                for (int k = 0; k < cfg.repetitions; ++k) jobs.push_back({&s, v, m, cfg.first_seed + k});
     std::vector<RunRecord> records(jobs.size());
     std::atomic<std::size_t> next{0};
     std::size_t done = 0, resumed = 0;
@@ -192,6 +207,7 @@ std::vector<RunRecord> runBatch(const BatchConfig& cfg, const std::string& out_d
             } catch (const std::exception& e) {  // file-system trouble: record, keep going
                 r.sequence = jobs[i].seq->name;
                 r.method = jobs[i].method;
+                r.variant = jobs[i].variant.name;
                 r.seed = jobs[i].seed;
                 r.status = "localize_failed";
                 r.error = e.what();

@@ -40,17 +40,19 @@ std::string header(const BatchSummary& s) {
 
 BatchSummary summarize(const BatchConfig& cfg, const std::vector<RunRecord>& records) {
     BatchSummary s;
-    s.methods = cfg.methods;
+    for (const auto& m : cfg.methods)
+        for (const auto& v : cfg.variants()) s.rows.push_back({m, v.name});
     for (const auto& q : cfg.sequences) s.sequences.push_back(q.name);
-    s.cells.assign(s.methods.size(), std::vector<BatchCell>(s.sequences.size()));
-    for (std::size_t mi = 0; mi < s.methods.size(); ++mi) {
+    s.cells.assign(s.rows.size(), std::vector<BatchCell>(s.sequences.size()));
+    for (std::size_t mi = 0; mi < s.rows.size(); ++mi) {
         std::vector<std::optional<double>> rot_cols, trans_cols, conv_cols;
         double rate_sum = 0;
         for (std::size_t si = 0; si < s.sequences.size(); ++si) {
             BatchCell& c = s.cells[mi][si];
             std::vector<std::optional<double>> rot, trans, conv;
             for (const auto& r : records) {
-                if (r.method != s.methods[mi] || r.sequence != s.sequences[si]) continue;
+                if (r.method != s.rows[mi].method || r.variant != s.rows[mi].variant || r.sequence != s.sequences[si])
+                    continue;
                 ++c.runs;
                 if (!r.success) continue;
                 ++c.successes;
@@ -85,8 +87,8 @@ std::string batchMarkdown(const BatchConfig& cfg, const BatchSummary& s) {
     std::ostringstream o;
     const auto table = [&](const std::string& title, auto cellText) {
         o << "### " << title << "\n\n" << header(s);
-        for (std::size_t mi = 0; mi < s.methods.size(); ++mi) {
-            o << "| " << methodLabel(s.methods[mi]) << " | " << cfg.map_name << " |";
+        for (std::size_t mi = 0; mi < s.rows.size(); ++mi) {
+            o << "| " << s.rows[mi].label() << " | " << cfg.map_name << " |";
             for (const auto& c : s.cells[mi]) o << " " << cellText(c) << " |";
             o << " " << cellText(s.avg[mi]) << " |\n";
         }
@@ -105,25 +107,25 @@ std::string batchMarkdown(const BatchConfig& cfg, const BatchSummary& s) {
 
 std::string runsCsv(const std::vector<RunRecord>& records) {
     std::ostringstream o;
-    o << "sequence,method,seed,status,success,converged,convergence_time_s,ate_trans_m,ate_rot_rad,duration_s,error\n";
+    o << "sequence,method,seed,status,success,converged,convergence_time_s,ate_trans_m,ate_rot_rad,duration_s,error,variant\n";
     for (const auto& r : records)
         o << r.sequence << "," << r.method << "," << r.seed << "," << r.status << "," << (r.success ? 1 : 0) << ","
           << (r.converged ? 1 : 0) << "," << csvNumber(r.convergence_time_s) << "," << csvNumber(r.ate_trans_m) << ","
-          << csvNumber(r.ate_rot_rad) << "," << fmt(r.duration_s, 6) << "," << csvQuote(r.error) << "\n";
+          << csvNumber(r.ate_rot_rad) << "," << fmt(r.duration_s, 6) << "," << csvQuote(r.error) << "," << r.variant << "\n";
     return o.str();
 }
 
 std::string summaryCsv(const BatchConfig& cfg, const BatchSummary& s) {
     std::ostringstream o;
-    o << "method,map,sequence,runs,successes,success_rate,ate_rot_rad,ate_trans_m,convergence_time_s\n";
-    const auto line = [&](const std::string& method, const std::string& seq, const BatchCell& c) {
-        o << method << "," << cfg.map_name << "," << seq << "," << c.runs << "," << c.successes << ","
+    o << "method,map,sequence,runs,successes,success_rate,ate_rot_rad,ate_trans_m,convergence_time_s,variant\n";
+    const auto line = [&](const BatchRow& row, const std::string& seq, const BatchCell& c) {
+        o << row.method << "," << cfg.map_name << "," << seq << "," << c.runs << "," << c.successes << ","
           << fmt(c.success_rate, 6) << "," << csvNumber(c.ate_rot_rad) << "," << csvNumber(c.ate_trans_m) << ","
-          << csvNumber(c.convergence_time_s) << "\n";
+          << csvNumber(c.convergence_time_s) << "," << row.variant << "\n";
     };
-    for (std::size_t mi = 0; mi < s.methods.size(); ++mi) {
-        for (std::size_t si = 0; si < s.sequences.size(); ++si) line(s.methods[mi], s.sequences[si], s.cells[mi][si]);
-        line(s.methods[mi], "AVG", s.avg[mi]);
+    for (std::size_t mi = 0; mi < s.rows.size(); ++mi) {
+        for (std::size_t si = 0; si < s.sequences.size(); ++si) line(s.rows[mi], s.sequences[si], s.cells[mi][si]);
+        line(s.rows[mi], "AVG", s.avg[mi]);
     }
     return o.str();
 }

@@ -38,12 +38,13 @@ std::string EvalApp::usage() {
            "  simp-eval plot-map --world W --png F\n"
            "      the object map of W over its floor plan, boxes coloured by class\n"
            "  simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]\n"
-           "      runs simp-localize for sequences x methods x seeds (resumable), writes DIR/tables.md,\n"
-           "      DIR/runs.csv, DIR/summary.csv\n"
+           "      runs simp-localize for sequences x localization configs x methods x seeds (resumable),\n"
+           "      evaluates the built maps of [batch] maps (Table I); writes DIR/tables.md, DIR/runs.csv,\n"
+           "      DIR/summary.csv, DIR/maps.csv, DIR/success.png, DIR/error_over_time.png\n"
            "\n"
            "--json prints one JSON object on the last line of standard output.\n"
            "--config INI: [metrics] max_trans_m, max_rot_rad, max_outside_s, convergence_fraction;\n"
-           "              [map_metrics] max_center_dist_m (command-line options override).\n"
+           "              [map_metrics] max_center_dist_m, classes (command-line options override).\n"
            "Definitions: doc/evaluation.md.\n";
 }
 

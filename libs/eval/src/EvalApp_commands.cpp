@@ -2,6 +2,8 @@
 #include <simp/io/StrictIni.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/eval/BatchConfig.h>
+#include <simp/eval/BatchFigures.h>
+#include <simp/eval/BatchMaps.h>
 #include <simp/eval/BatchRunner.h>
 #include <simp/eval/BatchTables.h>
 #include <simp/eval/Canvas.h>
@@ -98,15 +100,12 @@ int EvalApp::runMap(std::ostream& out) {
     MapMatchParams p;
     if (has("--config")) {
         const io::StrictIni ini(options_.at("--config"));
-        ini.loadChecked(
-            [&](const io::StrictIni& c) {
-                p.max_center_dist_m = c.readNumber("map_metrics", "max_center_dist_m", p.max_center_dist_m, 1e-6, 100);
-            },
-            {"batch", "metrics"});
+        ini.loadChecked([&](const io::StrictIni& c) { loadMapMetricsParams(c, p); }, {"batch", "metrics"});
     }
     p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m, 1e-6, 100);
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("simp-eval map: --max-center-dist must be > 0");
     if (has("--classes")) {
+        p.classes.clear();  // the command line wins over [map_metrics] classes
         std::stringstream list(options_.at("--classes"));
         for (std::string name; std::getline(list, name, ',');)
             if (!name.empty()) p.classes.push_back(name);
@@ -145,12 +144,19 @@ int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
     }
     fs::create_directories(out_dir);
     err << "batch configuration (" << ini << "):\n" << cfg.dump();
+    // the maps first: a missing or malformed map fails in a second, not after hours of runs
+    const auto maps = evaluateBatchMaps(cfg);
     const auto records = eval::runBatch(cfg, out_dir, err, &err == &std::cerr && ::isatty(STDERR_FILENO));
     const auto summary = summarize(cfg, records);
-    const std::string md = batchMarkdown(cfg, summary);
-    writeText(fs::path(out_dir) / "tables.md", md);
-    writeText(fs::path(out_dir) / "runs.csv", runsCsv(records));
-    writeText(fs::path(out_dir) / "summary.csv", summaryCsv(cfg, summary));
+    const std::string md = batchMarkdown(cfg, summary) + batchMapsMarkdown(maps);
+    const fs::path dir(out_dir);
+    writeText(dir / "tables.md", md);
+    writeText(dir / "runs.csv", runsCsv(records));
+    writeText(dir / "summary.csv", summaryCsv(cfg, summary));
+    if (!maps.empty()) writeText(dir / "maps.csv", batchMapsCsv(maps));
+    writePng((dir / "success.png").string(), drawSuccessFigure(summary));
+    writePng((dir / "error_over_time.png").string(),
+             drawErrorOverTimeFigure(summary, loadRunErrors(cfg, summary, records, out_dir), cfg.metrics.max_trans_m));
     std::size_t failed = 0;
     for (const auto& r : records)
         if (r.status != "ok") {
@@ -158,9 +164,10 @@ int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
             err << "run " << r.sequence << "/" << r.method << "/seed" << r.seed << ": " << r.status << ": " << r.error
                 << "\n";
         }
-    out << md << "tables: " << (fs::path(out_dir) / "tables.md").string() << ", runs: "
-        << (fs::path(out_dir) / "runs.csv").string() << ", summary: " << (fs::path(out_dir) / "summary.csv").string()
-        << "\n";
+    out << md << "tables: " << (dir / "tables.md").string() << ", runs: " << (dir / "runs.csv").string()
+        << ", summary: " << (dir / "summary.csv").string();
+    if (!maps.empty()) out << ", maps: " << (dir / "maps.csv").string();
+    out << "\nfigures: " << (dir / "success.png").string() << ", " << (dir / "error_over_time.png").string() << "\n";
     if (failed) out << failed << " of " << records.size() << " runs failed (counted as unsuccessful)\n";
     return 0;
 }

@@ -1,12 +1,19 @@
 #pragma once
 /// \file BatchConfig.h
-/// The batch experiment description (config_ini/batch.ini, section [batch] and [metrics];
-/// keys documented in doc/evaluation.md): sequences x methods x seeds runs of simp-localize.
+/// The batch experiment description (config_ini/batch.ini, sections [batch], [metrics] and
+/// [map_metrics]; keys documented in doc/evaluation.md): sequences x localization configs x
+/// methods x seeds runs of simp-localize, and the built maps evaluated against their ground truth.
+/// Each field is read from the .ini key of the same name.
 
+#include <simp/eval/MapMetrics.h>
 #include <simp/eval/TrajectoryMetrics.h>
 
 #include <string>
 #include <vector>
+
+namespace simp::io {
+class StrictIni;
+}
 
 namespace simp::eval {
 
@@ -16,30 +23,65 @@ struct BatchSequence {
     std::string dir;   ///< the directory Q
 };
 
+/// One simp-localize configuration, run with every method: a group of rows in the tables.
+struct BatchVariant {
+    std::string name;    ///< row suffix "Ours (name)" and run folder; empty = the single-config layout
+    std::string config;  ///< passed as --config when not empty
+};
+
+/// A built map evaluated against its ground-truth world (Table I).
+struct BatchMap {
+    std::string name;          ///< table label, default: the directory's name
+    std::string dir;           ///< the map's world directory
+    std::string ground_truth;  ///< the ground-truth world directory
+};
+
 struct BatchConfig {
     std::string world;                       ///< localization map (world directory), required
     std::string map_name = "GT";             ///< label of the map in the tables ("Map" column)
     std::vector<BatchSequence> sequences;    ///< required, at least one
     std::vector<std::string> methods{"simp", "edt", "d", "o"};  ///< simp-localize --method values
-    int repetitions = 5;                     ///< runs per sequence and method
+    int repetitions = 5;                     ///< runs per sequence, config and method
     int first_seed = 1;                      ///< seeds first_seed, first_seed + 1, ...
     int cores = 2;                           ///< runs executed in parallel
     std::string localize_bin;                ///< simp-localize path; empty = next to simp-eval
-    std::string localize_config;             ///< passed as --config when not empty
+    /// One config for every run (the layout before localize_configs existed; excludes localize_configs).
+    std::string localize_config;
+    /// Several configs, each run with every method as its own rows (e.g. paper and robust).
+    std::vector<std::string> localize_configs;
+    /// Row labels of localize_configs, one each (default: each file's stem); unique, no '/'.
+    std::vector<std::string> localize_config_names;
     int particles = 0;                       ///< passed as --particles when > 0
     std::vector<std::string> extra_args;     ///< appended to every simp-localize command line
+    std::vector<std::string> maps;           ///< built maps (world directories) for Table I; may be empty
+    std::vector<std::string> map_names;      ///< their labels, one each (default: directory names)
+    /// Ground-truth world of each map: one for all, or one per map; empty = `world`.
+    std::vector<std::string> map_ground_truths;
     TrajMetricsParams metrics;               ///< [metrics] section
+    MapMatchParams map_metrics;              ///< [map_metrics] section
+
+    /// The localization configs as rows: localize_configs with their names, else one unnamed
+    /// variant holding localize_config.
+    std::vector<BatchVariant> variants() const;
+    /// The maps with their labels and ground truths resolved (defaults as documented above).
+    std::vector<BatchMap> batchMaps() const;
 
     /// Multi-line "key = value" dump of what is used.
     std::string dump() const;
 };
 
-/// Reads an .ini file. Lists (sequences, sequence_names, methods, extra_args) are separated
-/// by spaces or commas. \throw std::runtime_error naming the file and key on a missing
-/// required key, an unknown method, a non-positive count or mismatched list lengths.
+/// Reads an .ini file. Lists (sequences, sequence_names, methods, localize_configs, maps, ...)
+/// are separated by spaces or commas. \throw std::runtime_error naming the file and key on a
+/// missing required key, an unknown method, a non-positive count or mismatched list lengths.
 BatchConfig loadBatchConfig(const std::string& ini_path);
+
+/// Reads [map_metrics] (max_center_dist_m, classes) of `ini` into `p` (simp-eval map --config too).
+void loadMapMetricsParams(const io::StrictIni& ini, MapMatchParams& p);
 
 /// Paper label of a method: simp -> Ours, edt -> EDT-MCL, d -> D-MCL, o -> O-MCL.
 std::string methodLabel(const std::string& method);
+
+/// Table row label: the method's paper label, with " (variant)" when the variant is named.
+std::string rowLabel(const std::string& method, const std::string& variant);
 
 }  // namespace simp::eval

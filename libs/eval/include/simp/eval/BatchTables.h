@@ -1,6 +1,7 @@
 #pragma once
 /// \file BatchTables.h
-/// Aggregation of batch runs into the paper's Tables II/III layout (methods as rows,
+/// Aggregation of batch runs into the paper's Tables II/III layout (methods as rows, each
+/// method's localization configs side by side, e.g. "Ours (paper)" then "Ours (robust)";
 /// sequences as columns, AVG last).
 ///
 /// Per (method, sequence) cell:
@@ -26,11 +27,18 @@ struct BatchCell {
     std::optional<double> convergence_time_s;        ///< mean over successful runs (s)
 };
 
+/// One row of the tables: a method run with one localization config.
+struct BatchRow {
+    std::string method;   ///< simp-localize --method
+    std::string variant;  ///< BatchVariant::name ("" = the single config)
+    std::string label() const { return rowLabel(method, variant); }
+};
+
 struct BatchSummary {
-    std::vector<std::string> methods;    ///< rows
+    std::vector<BatchRow> rows;          ///< methods x variants, in the order of cfg.methods, cfg.variants()
     std::vector<std::string> sequences;  ///< columns
-    std::vector<std::vector<BatchCell>> cells;  ///< [method][sequence]
-    std::vector<BatchCell> avg;                 ///< [method]: the AVG column
+    std::vector<std::vector<BatchCell>> cells;  ///< [row][sequence]
+    std::vector<BatchCell> avg;                 ///< [row]: the AVG column
 };
 
 BatchSummary summarize(const BatchConfig& cfg, const std::vector<RunRecord>& records);
@@ -39,11 +47,12 @@ BatchSummary summarize(const BatchConfig& cfg, const std::vector<RunRecord>& rec
 std::string batchMarkdown(const BatchConfig& cfg, const BatchSummary& s);
 
 /// CSV of every run: sequence,method,seed,status,success,converged,convergence_time_s,
-/// ate_trans_m,ate_rot_rad,duration_s,error (empty field = null).
+/// ate_trans_m,ate_rot_rad,duration_s,error,variant (empty field = null; variant last so the
+/// columns of batches before localize_configs keep their positions).
 std::string runsCsv(const std::vector<RunRecord>& records);
 
 /// CSV of the cells: method,map,sequence,runs,successes,success_rate,ate_rot_rad,ate_trans_m,
-/// convergence_time_s (sequence "AVG" for the average column).
+/// convergence_time_s,variant (sequence "AVG" for the average column).
 std::string summaryCsv(const BatchConfig& cfg, const BatchSummary& s);
 
 }  // namespace simp::eval
