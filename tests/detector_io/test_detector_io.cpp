@@ -1,5 +1,6 @@
 /// Tests of the detector file formats and tools (doc/detector-io.md): Omni3D box convention,
 /// rig files, Cube R-CNN predictions JSON, the authors' ROS CSV, rawlog round trips, bad input.
+#include "common/ErrorOf.h"
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
@@ -42,16 +43,7 @@ void writeText(const std::string& path, const std::string& text) { std::ofstream
 
 int runTool(const std::string& cmd) { return std::system((kBin + cmd + " > /dev/null 2>&1").c_str()); }
 
-/// Message of the exception thrown by f (empty when none).
-template <class F>
-std::string errorOf(F f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
+using simp_test::errorOf;
 
 geometry::Box3D randomBox(std::mt19937& rng) {
     std::uniform_real_distribution<double> u(-1, 1);

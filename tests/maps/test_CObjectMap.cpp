@@ -1,4 +1,5 @@
 // CObjectMap as an MRPT map: serialization, .ini creation, bad input.
+#include "common/ErrorOf.h"
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CMemoryStream.h>
@@ -27,14 +28,7 @@ std::string outDir() {
     return d.string();
 }
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
+using simp_test::errorOf;
 
 TEST(CObjectMap, SerializationRoundTrip) {
     CObjectMap map;

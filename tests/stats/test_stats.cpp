@@ -1,6 +1,7 @@
 /// Tests of the statistical analysis (paper Sec. "Statistical Analysis"): matching rules, the
 /// Gaussian fit and its standard errors, and simp-stats end to end on simulated detections whose
 /// centres are drawn from a known per-class Gaussian in the object frame.
+#include "common/ErrorOf.h"
 #include <gtest/gtest.h>
 #include <simp/world/NoiseFrame.h>
 #include <mrpt/config/CConfigFile.h>
@@ -109,14 +110,7 @@ void simulate(const std::string& dir, const world::ObjectMapData& w, const std::
     labels::writeDetectionRawlog(dir + "/sequence.rawlog", out);
 }
 
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
+using simp_test::errorOf;
 
 }  // namespace
 
