@@ -218,7 +218,7 @@ void DemoApp::run(std::ostream& out) {
 
     // 5. A kidnapped robot.
     kidnap_runs.clear();
-    if (options.kidnap_run) kidnap_runs.push_back(runKidnapped(root, map_dir, truth, out));
+    if (options.kidnap_run) kidnap_runs.push_back(runKidnapped(root, map_dir, truth, built, out));
 
     // 6. The tables.
     std::string table = resultsTable(runs);
@@ -253,7 +253,7 @@ localization::LocalizeApp DemoApp::localize(const std::string& map_dir, const st
 }
 
 DemoKidnapRun DemoApp::runKidnapped(const fs::path& root, const std::string& map_dir, const world::World& truth,
-                                    std::ostream& out) const {
+                                    const world::World& built, std::ostream& out) const {
     DemoKidnapRun r;
     r.kidnap_at_s = 0.5 * options.localization_duration_s;
     out << "[5/6] " << r.name << ": simulating " << options.localization_duration_s << " s with "
@@ -290,7 +290,7 @@ DemoKidnapRun DemoApp::runKidnapped(const fs::path& root, const std::string& map
     if (!loc.estimate.empty()) {
         const auto whole = eval::evaluateTrajectory(gt, loc.estimate, eval::TrajMetricsParams());
         writePng((root / (r.name + "_trajectory.png")).string(),
-                 eval::drawTrajectoryFigure(gt, loc.estimate, whole, eval::TrajMetricsParams(), nullptr));
+                 eval::drawTrajectoryFigure(gt, loc.estimate, whole, eval::TrajMetricsParams(), &built));
     }
     return r;
 }

@@ -91,7 +91,7 @@ class DemoApp {
                                        const std::string& est_dir, std::uint64_t seed) const;
     /// Step 5: simulates, localizes and evaluates the kidnapped run.
     DemoKidnapRun runKidnapped(const std::filesystem::path& root, const std::string& map_dir,
-                               const world::World& truth, std::ostream& out) const;
+                               const world::World& truth, const world::World& built, std::ostream& out) const;
 };
 
 /// The result table in Markdown (also written to DIR/results.md). A failed run shows "failed (diverged)"
