@@ -14,6 +14,8 @@
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace simp::localization {
 namespace {
@@ -134,6 +136,34 @@ std::string innermostMessage(const std::exception& e) {
     return m.erase(0, m.find_first_not_of(' '));
 }
 
+/// True when no top-level entry starts after the entry at byte `entry_start` of the (uncompressed)
+/// rawlog: the failed entry is the file's last one, i.e. a tail cut short while the file is being
+/// written, not corruption in the middle. A sensory frame holds observations, so inside one only
+/// another frame or action collection marks a later entry.
+bool isLastEntry(const std::string& path, std::uint64_t entry_start) {
+    mrpt::io::CFileGZInputStream in;
+    if (!in.open(path)) return false;
+    std::string bytes;
+    std::vector<char> chunk(1 << 16);
+    std::uint64_t skipped = 0;
+    for (;;) {
+        const size_t n = in.Read(chunk.data(), chunk.size());
+        if (n == 0 || n > chunk.size()) break;  // end, or zlib's error (-1) as a huge size
+        const std::uint64_t from = skipped >= entry_start ? 0 : std::min<std::uint64_t>(n, entry_start - skipped);
+        bytes.append(chunk.data() + from, n - from);
+        skipped += n;
+    }
+    static const std::string frame = std::string(1, '\x98') + "mrpt::obs::CSensoryFrame";
+    static const std::string actions = std::string(1, '\x9c') + "mrpt::obs::CActionCollection";
+    static const std::string observation = std::string(1, '\xa0') + "simp::obs::CObservationObjects3D";
+    const bool in_frame = bytes.rfind(frame, 0) == 0;
+    for (const auto* h : {&frame, &actions, &observation}) {
+        if (in_frame && h == &observation) continue;
+        if (bytes.find(*h, 1) != std::string::npos) return false;
+    }
+    return true;
+}
+
 void dispatch(FrameBuilder& builder, const mrpt::serialization::CSerializable::Ptr& obj) {
     if (auto acts = std::dynamic_pointer_cast<mrpt::obs::CActionCollection>(obj))
         builder.action(*acts);
@@ -148,9 +178,9 @@ void dispatch(FrameBuilder& builder, const mrpt::serialization::CSerializable::P
 
 RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     if (!mrpt::system::fileExists(path)) throw std::runtime_error("rawlog '" + path + "' does not exist");
-    std::uint64_t size = 0;
+    obs::ReadableSize size;
     try {
-        size = obs::uncompressedFileSize(path);
+        size = obs::readableFileSize(path);
     } catch (const std::exception& e) {
         throw std::runtime_error("rawlog " + std::string(e.what()));
     }
@@ -158,17 +188,18 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     if (!in.open(path)) throw std::runtime_error("rawlog '" + path + "' cannot be opened");
     // Through a BoundedArchive, as simp::obs::readRawlog: counts in the file are checked against the
     // bytes it still holds, and MRPT's own readers are guarded where they allocate what a file says.
-    obs::BoundedArchive arch(in, size, path);
+    obs::BoundedArchive arch(in, size.bytes, path);
 
     RawlogSequence seq;
     FrameBuilder builder(seq, path);
     while (arch.bytesLeft() > 0) {  // a clean end lies between objects
         mrpt::serialization::CSerializable::Ptr obj;
+        const std::uint64_t entry_start = arch.bytesRead();
         try {
             obj = arch.readObjectGuarded();
         } catch (const std::exception& e) {
-            // A tail cut short (nothing left after the failed entry) of a file still being written.
-            if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && arch.bytesLeft() == 0) {
+            // A tail cut short (no entry after the failed one) of a file still being written.
+            if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && !size.corrupt && isLastEntry(path, entry_start)) {
                 seq.truncated_at_entry = seq.entries + 1;
                 break;
             }
@@ -181,6 +212,9 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
         ++seq.entries;
         dispatch(builder, obj);
     }
+    if (size.corrupt)  // the readable part ended between two entries: the rest is lost, say where
+        throw std::runtime_error("rawlog '" + path + "' is corrupt after entry " + std::to_string(seq.entries) +
+                                 ": the gzip data cannot be decompressed beyond " + std::to_string(size.bytes) + " bytes");
     builder.finish();
     if (seq.frames.empty()) throw std::runtime_error("rawlog '" + path + "' holds no sensory frame or observation");
     return seq;

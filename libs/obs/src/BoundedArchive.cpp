@@ -165,7 +165,7 @@ std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& ar
     return std::nullopt;
 }
 
-std::uint64_t uncompressedFileSize(const std::string& path) {
+ReadableSize readableFileSize(const std::string& path) {
     std::error_code ec;
     const auto file_size = std::filesystem::file_size(path, ec);
     if (ec) throw std::runtime_error("'" + path + "': cannot get the file size: " + ec.message());
@@ -175,18 +175,28 @@ std::uint64_t uncompressedFileSize(const std::string& path) {
         if (!f) throw std::runtime_error("'" + path + "': cannot open for reading");
         f.read(reinterpret_cast<char*>(magic), 2);
     }
-    if (!(magic[0] == 0x1f && magic[1] == 0x8b)) return file_size;  // not gzip
+    if (!(magic[0] == 0x1f && magic[1] == 0x8b)) return {file_size, false};  // not gzip
     // gzip's own size field (ISIZE) is modulo 2^32 and per member: count the bytes instead.
     mrpt::io::CFileGZInputStream gz;
     if (!gz.open(path)) throw std::runtime_error("'" + path + "': cannot open for reading");
     std::vector<unsigned char> chunk(1 << 16);
-    std::uint64_t total = 0;
+    ReadableSize r;
     for (;;) {
         const size_t n = gz.Read(chunk.data(), chunk.size());
         if (n == 0) break;
-        total += n;
+        if (n > chunk.size()) {  // zlib's error (-1) arrives as a huge size
+            r.corrupt = true;
+            break;
+        }
+        r.bytes += n;
     }
-    return total;
+    return r;
+}
+
+std::uint64_t uncompressedFileSize(const std::string& path) {
+    const ReadableSize r = readableFileSize(path);
+    if (r.corrupt) throw std::runtime_error("'" + path + "': corrupt gzip data after " + std::to_string(r.bytes) + " bytes");
+    return r.bytes;
 }
 
 }  // namespace simp::obs

@@ -63,4 +63,13 @@ std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& ar
 /// the file when it cannot be read.
 std::uint64_t uncompressedFileSize(const std::string& path);
 
+/// Like uncompressedFileSize(), but a corrupt gzip stream is not an error here: `bytes` is what
+/// decompresses before the corruption and `corrupt` says the rest cannot be read (the caller then
+/// names the entry where the readable data ends).
+struct ReadableSize {
+    std::uint64_t bytes = 0;
+    bool corrupt = false;
+};
+ReadableSize readableFileSize(const std::string& path);
+
 }  // namespace simp::obs
