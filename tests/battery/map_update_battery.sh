@@ -17,8 +17,7 @@ CONFIG=${CONFIG:-config_ini/mapping.ini}
 CLASSES=${CLASSES:-"board,cabinet,desk,drawers,fire extinguisher,oven,potted plant,sink,sofa,table"}  # Table I
 STAGE=${STAGE:-all}   # data: only simulate and build M0; all: also update and score
 mkdir -p "$OUT"
-rows="$OUT/rows.tsv"
-printf 'world\trun\tn_true\tn_report\trm_P\trm_R\tmv_P\tmv_R\tad_P\tad_R\tfalse_changes\tiou\tprecision\trecall\n' > "$rows"
+rows="$OUT/runs.jsonl"; : > "$rows"
 for ws in $WORLD_SEEDS; do
   W="$OUT/w$ws"; Q1="$OUT/q1_w$ws"; M0="$OUT/m0_w$ws"
   [ -d "$W" ] || "$B/simp-sim" world --builtin office --seed "$ws" --out "$W" >/dev/null
@@ -34,36 +33,39 @@ for ws in $WORLD_SEEDS; do
     [ "$STAGE" = all ] || continue
     "$B/simp-map" --world "$W" --rawlog "$Q/sequence.rawlog" --poses "$Q/groundtruth.tum" --update "$M0" --out "$M" \
         --config "$CONFIG" > "$M.log"
-    ev=$("$B/simp-eval" changes --truth "$Q/changes.json" --report "$M/changes.json" --before-world "$W" \
-        --before-map "$M0" --classes "$CLASSES" --json | tail -n 1)
+    ev=( "$B/simp-eval" changes --truth "$Q/changes.json" --report "$M/changes.json" --before-world "$W"
+         --before-map "$M0" --classes "$CLASSES" --json )
+    all=$("${ev[@]}" | tail -n 1)
+    vis=$("${ev[@]}" --visited "$Q/groundtruth.tum" | tail -n 1)
     mp=$("$B/simp-eval" map --gt "$Q/world" --map "$M" --classes "$CLASSES" --json | tail -n 1)
-    python3 - "$ws" "$ch" "$ev" "$mp" >> "$rows" <<'PY'
-import json, sys
-ws, ch, ev, mp = sys.argv[1:5]
-e, m = json.loads(ev), json.loads(mp)
-kinds = ("removed", "moved", "added")
-# Scored entries (Table I classes; truth relative to M0, doc/evaluation.md).
-t = sum(e[k]["n_true"] for k in kinds)
-r = [None] * sum(e[k]["n_reported"] for k in kinds)
-f = lambda v: "nan" if v is None else "%.3f" % v
-print("\t".join([ws, ch, str(t), str(len(r))] + [f(e[k][q]) for k in kinds for q in ("precision", "recall")]
-                + [str(len(r)) if float(ch) == 0 else "-", f(m["iou"]), f(m["precision"]), f(m["recall"])]))
-PY
+    echo "{\"world\": $ws, \"changes\": $ch, \"all\": $all, \"visited\": $vis, \"map\": $mp}" >> "$rows"
   done
 done
 [ "$STAGE" = all ] || exit 0
-cat "$rows"
 python3 - "$rows" <<'PY'
-import csv, sys, math
-rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
-for run in sorted({r["run"] for r in rows}):
-    rs = [r for r in rows if r["run"] == run]
-    def mean(k):
-        v = [float(r[k]) for r in rs if r[k] not in ("nan", "-")]
-        return sum(v) / len(v) if v else float("nan")
-    keys = ["rm_P", "rm_R", "mv_P", "mv_R", "ad_P", "ad_R", "iou", "precision", "recall"]
-    extra = ""
-    if float(run) == 0:
-        extra = "  false changes per world: max %d, mean %.2f" % (max(int(r["false_changes"]) for r in rs), mean("false_changes"))
-    print("changes %s (%d worlds): " % (run, len(rs)) + ", ".join("%s %.3f" % (k, mean(k)) for k in keys) + extra)
+import json, sys
+runs = [json.loads(l) for l in open(sys.argv[1])]
+kinds = ("removed", "moved", "added")
+print("world changes | scope   | removed P/R (true) | moved P/R (true) | added P/R (true) | map IoU Pr Rc")
+for r in runs:
+    for scope in ("all", "visited"):
+        e = r[scope]
+        cells = ["%.2f/%.2f (%d)" % (e[k]["precision"], e[k]["recall"], e[k]["n_true"]) for k in kinds]
+        print("%5d %7s | %-7s | %s | %.3f %.3f %.3f" % (r["world"], r["changes"], scope, " | ".join(cells),
+                                                     r["map"]["iou"], r["map"]["precision"], r["map"]["recall"]))
+for ch in sorted({r["changes"] for r in runs}):
+    rs = [r for r in runs if r["changes"] == ch]
+    print("\n--changes %s, %d worlds (pooled counts):" % (ch, len(rs)))
+    for scope in ("all", "visited"):
+        parts = []
+        for k in kinds:
+            t = sum(r[scope][k]["n_true"] for r in rs); rep = sum(r[scope][k]["n_reported"] for r in rs)
+            c = sum(r[scope][k]["n_correct"] for r in rs)
+            parts.append("%s P %.3f R %.3f (%d true, %d reported, %d correct)" % (k, c / rep if rep else 1, c / t if t else 1, t, rep, c))
+        print("  %-7s: %s" % (scope, "; ".join(parts)))
+    m = lambda key: sum(r["map"][key] for r in rs) / len(rs)
+    print("  updated map vs Q/world (mean over worlds): IoU %.3f, Pr %.3f, Rc %.3f" % (m("iou"), m("precision"), m("recall")))
+    if float(ch) == 0:
+        false = [sum(r["all"][k]["n_reported"] for k in kinds) for r in rs]
+        print("  false changes per world (Table I classes): %s, max %d" % (false, max(false)))
 PY

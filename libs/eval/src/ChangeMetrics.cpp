@@ -1,7 +1,9 @@
 /// \file ChangeMetrics.cpp
 /// scoreChanges (ChangeMetrics.h).
 #include <simp/eval/ChangeMetrics.h>
+#include <simp/eval/MapMetrics.h>
 #include <simp/geometry/Hungarian.h>
+#include <simp/io/Tum.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -46,13 +48,23 @@ struct Placed {
 
 }  // namespace
 
+std::set<int> visitedRooms(const world::RoomMap& rooms, const std::string& tum_path) {
+    std::set<int> out;
+    for (const auto& p : io::readTum(tum_path))
+        if (const int r = rooms.roomAt(p.pose.x, p.pose.y)) out.insert(r);
+    return out;
+}
+
 ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::vector<ChangeRecord>& report_in,
                           const ChangeMatchParams& p, const BeforeMaps& before) {
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("scoreChanges: max_center_dist_m must be > 0");
     const std::set<std::string> classes(p.classes.begin(), p.classes.end());
+    const auto visited = [&](const std::optional<geometry::Box3D>& b) {
+        return b && p.visited_rooms.count(world::roomOfBox(*p.rooms, *b));
+    };
     const auto scored = [&](const ChangeRecord& c) {
         return (c.kind == "removed" || c.kind == "moved" || c.kind == "added") &&
-               (classes.empty() || classes.count(c.class_name));
+               (classes.empty() || classes.count(c.class_name)) && (!p.rooms || visited(c.before) || visited(c.after));
     };
     std::vector<ChangeRecord> truth, report;
     for (const auto& c : truth_in)
@@ -63,27 +75,21 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
     ChangeScores s;
     std::vector<Placed> missed_by_map;  // W objects still in place that the before map lacks
     if (before.world && before.map) {
-        // W's ids -> the map's ids: per class, Hungarian on the planar centre distance.
+        // W's ids -> the map's ids: the map metrics' matching (simp-eval map: footprints must
+        // overlap, centres within the gate), so an object of the map that is nowhere near a real
+        // one is a ghost here as it is a false object there.
         const auto& W = *before.world;
         const auto& M = *before.map;
+        MapMatchParams mp;
+        mp.max_center_dist_m = p.max_center_dist_m;
+        mp.classes = p.classes;
         std::map<std::int64_t, std::int64_t> w_to_m;
         std::set<std::int64_t> m_with_w;
-        std::map<std::string, std::pair<std::vector<std::size_t>, std::vector<std::size_t>>> by_class;
-        for (std::size_t i = 0; i < W.objects.size(); ++i)
-            by_class[W.class_names.at(static_cast<std::size_t>(W.objects[i].class_id))].first.push_back(i);
-        for (std::size_t j = 0; j < M.objects.size(); ++j)
-            by_class[M.class_names.at(static_cast<std::size_t>(M.objects[j].class_id))].second.push_back(j);
-        for (const auto& [name, idx] : by_class) {
-            const auto& [wi, mj] = idx;
-            const auto pairs = gatedPairs(
-                wi.size(), mj.size(),
-                [&](std::size_t a, std::size_t b) { return planar(W.objects[wi[a]].box.center, M.objects[mj[b]].box.center); },
-                p.max_center_dist_m);
-            for (const auto& [a, b] : pairs) {
-                w_to_m[W.objects[wi[a]].id] = M.objects[mj[b]].id;
-                m_with_w.insert(M.objects[mj[b]].id);
+        if (!W.objects.empty() || !M.objects.empty())
+            for (const ObjectMatch& m : evaluateMap(W, M, mp).matches) {
+                w_to_m[W.objects.at(m.gt_index).id] = M.objects.at(m.pred_index).id;
+                m_with_w.insert(M.objects.at(m.pred_index).id);
             }
-        }
         std::set<std::int64_t> changed_w;
         std::vector<ChangeRecord> t2;
         for (auto c : truth) {

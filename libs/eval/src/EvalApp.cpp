@@ -20,7 +20,7 @@ const std::map<std::string, std::map<std::string, bool>>& knownOptions() {
         {"plot-map", {{"--world", true}, {"--png", true}}},
         {"changes",
          {{"--truth", true}, {"--report", true}, {"--json", false}, {"--max-center-dist", true}, {"--classes", true},
-          {"--before-world", true}, {"--before-map", true}}},
+          {"--before-world", true}, {"--before-map", true}, {"--visited", true}}},
         {"batch", {{"--config", true}, {"--out", true}, {"--cores", true}}},
     };
     return k;
@@ -39,10 +39,11 @@ std::string EvalApp::usage() {
            "                [--classes a,b,...]   (evaluate only these classes)\n"
            "      per-class footprint IoU, precision, recall of the object map M against W (gate 1.0 m)\n"
            "  simp-eval changes --truth Q/changes.json --report M/changes.json [--json] [--max-center-dist M]\n"
-           "                    [--classes a,b,...] [--before-world W --before-map M0]\n"
+           "                    [--classes a,b,...] [--before-world W --before-map M0] [--visited TUM]\n"
            "      precision and recall per kind of change: removed / moved matched by id_before, added by class\n"
            "      and centre distance (gate 1.0 m); --before-world/--before-map: the report's ids are those of a\n"
-           "      built map M0, matched to W's objects by class and centre distance\n"
+           "      built map M0, matched to W's objects by class and centre distance; --visited Q/groundtruth.tum\n"
+           "      (with --before-world): only changes in the rooms of W the trajectory entered\n"
            "  simp-eval plot-map --world W --png F\n"
            "      the object map of W over its floor plan, boxes coloured by class\n"
            "  simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]\n"

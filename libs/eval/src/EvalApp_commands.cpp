@@ -157,6 +157,15 @@ int EvalApp::runChanges(std::ostream& out) {
         before.world = &w.objects;
         before.map = &m0.objects;
     }
+    if (has("--visited")) {
+        if (!before.world) throw std::invalid_argument("simp-eval changes: --visited needs --before-world (its rooms.png)");
+        requireFile(options_.at("--visited"), "visited trajectory");
+        if (w.rooms.empty())
+            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + options_.at("--before-world") +
+                                        "' has no rooms.png");
+        p.rooms = &w.rooms;
+        p.visited_rooms = visitedRooms(w.rooms, options_.at("--visited"));
+    }
     const ChangeScores s = scoreChanges(truth, report, p, before);
     out << "change evaluation: " << report_path << " against " << truth_path << " (added: centre gate "
         << fmt(p.max_center_dist_m, 2) << " m)\n\n"
@@ -165,6 +174,7 @@ int EvalApp::runChanges(std::ostream& out) {
         out << "\nbefore map '" << options_.at("--before-map") << "': " << s.truth_not_in_map
             << " true removals of objects it never had (dropped), " << s.ignored_reports
             << " reports about its ghosts or objects it had missed (ignored)\n";
+    if (p.rooms) out << "scored: changes in the " << p.visited_rooms.size() << " rooms the trajectory entered\n";
     if (has("--json")) out << toJson(s).dump() << "\n";
     return 0;
 }

@@ -54,10 +54,18 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
             gone.push_back({&o, e});
     }
 
-    // New confirmed objects of this session.
+    // New confirmed objects of this session. The earlier map already explains the scene, so a new
+    // object needs more viewpoints than confirmation: stray twins of a few windows stay tentative.
     std::vector<std::size_t> fresh;
-    for (std::size_t k = 0; k < r.map.objects.size(); ++k)
-        if (!builder.isGivenObject(r.map.objects[k].id)) fresh.push_back(k);
+    std::vector<bool> drop(r.map.objects.size(), false);  // objects left out of the updated map
+    for (std::size_t k = 0; k < r.map.objects.size(); ++k) {
+        const std::int64_t id = r.map.objects[k].id;
+        if (builder.isGivenObject(id)) continue;
+        if (builder.evidenceOf(id).windows_matched >= opt.update_min_new_windows)
+            fresh.push_back(k);
+        else
+            drop[k] = true;
+    }
 
     // Pair gone and new objects of one class, closest first (deterministic: ties by order).
     struct Pair {
@@ -81,7 +89,6 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
             partner_of_gone[p.g] = static_cast<int>(p.f), partner_of_fresh[p.f] = static_cast<int>(p.g);
 
     std::vector<world::ChangeRecord> removed, moved, added;
-    std::vector<bool> drop(r.map.objects.size(), false);  // the old copies leave the map
     for (std::size_t g = 0; g < gone.size(); ++g) {
         const world::MapObject& b = *gone[g].before;
         if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;

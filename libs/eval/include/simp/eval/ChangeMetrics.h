@@ -15,16 +15,18 @@
 ///    (1 when nothing changed).
 /// With a built "before" map (ids of its own, not the world's), BeforeMaps translates the truth
 /// (ChangeMetrics.cpp, doc/evaluation.md): W's objects are matched to the map's per class
-/// (Hungarian on centre distance, same gate); a true removal of an object the map never had is
+/// (the map metrics' matching, MapMetrics.h); a true removal of an object the map never had is
 /// dropped, a true move of one becomes an addition; reports about map objects without a W
 /// counterpart (ghosts) and additions of W objects the map had missed (still in place) are neither
 /// right nor wrong (counted in ignored_reports).
 
 #include <simp/world/ChangesFile.h>
 #include <simp/world/ObjectMapData.h>
+#include <simp/world/World.h>
 
 #include <nlohmann/json.hpp>
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -33,7 +35,14 @@ namespace simp::eval {
 struct ChangeMatchParams {
     double max_center_dist_m = 1.0;    ///< gate of added entries and of W <-> before-map matching (m)
     std::vector<std::string> classes;  ///< when not empty, only changes of these classes are scored
+    /// When set: only changes in the rooms `visited_rooms` (room of the before or after box in
+    /// `rooms`) are scored: a session that never entered a room cannot see what changed there.
+    const world::RoomMap* rooms = nullptr;
+    std::set<int> visited_rooms;
 };
+
+/// Room ids of `rooms` that the trajectory `tum_path` passes through (room 0 left out).
+std::set<int> visitedRooms(const world::RoomMap& rooms, const std::string& tum_path);
 
 struct KindScore {
     std::size_t n_true = 0, n_reported = 0, n_correct = 0;

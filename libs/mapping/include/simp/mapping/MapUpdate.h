@@ -14,6 +14,9 @@
 ///    is within update_move_max_distance_m (closest pairs first); it keeps its m0 id. A pair
 ///    closer than update_min_move_m is the object re-estimated: no change, the new box replaces it.
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
+///  New objects count (and enter the updated map) only once matched in update_min_new_windows
+///  integration windows: the earlier map already explains the scene, so a twin made of a few
+///  windows' errors must not become a change.
 /// Objects of m0 the session never expected to see stay as they were.
 
 #include <simp/mapping/ObjectMapBuilder.h>
