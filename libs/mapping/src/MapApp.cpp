@@ -70,8 +70,9 @@ void MapApp::initialize(const MapAppArgs& args) {
     if (!fs::exists(args.poses_path)) throw std::runtime_error("poses file '" + args.poses_path + "' does not exist");
     if (args.out_dir.empty()) throw std::invalid_argument("--out must not be empty");
     if (!args.update_dir.empty() && !fs::is_directory(args.update_dir))
-        throw std::runtime_error("--update map '" + args.update_dir + "' does not exist (expected a world directory "
-                                 "written by simp-map)");
+        throw std::runtime_error("--update map '" + args.update_dir + "' " +
+                                 (fs::exists(args.update_dir) ? "is not a directory" : "does not exist") +
+                                 " (expected a world directory written by simp-map)");
     MappingOptions opts;
     if (!args.config_path.empty()) {
         const io::StrictIni ini(args.config_path);  // exists, is a file, is an .ini
