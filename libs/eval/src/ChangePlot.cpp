@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <cstdint>
 #include <set>
 
 namespace simp::eval {
@@ -28,11 +29,17 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
     Canvas c = makeCanvasFor(&grid, x0, y0, x1, y1);
 
-    std::set<int> present;
-    for (const auto& o : map.objects) {
-        drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id), 1, 0.15);
-        present.insert(o.class_id);
-    }
+    // Unchanged objects in grey: the class palette shares red and green with the kinds.
+    const cv::Scalar kUnchanged(150, 150, 150);
+    std::set<std::int64_t> changed_ids;
+    for (const auto& ch : changes)
+        if (ch.id_after) changed_ids.insert(*ch.id_after);
+    int n_unchanged = 0;
+    for (const auto& o : map.objects)
+        if (!changed_ids.count(o.id)) {
+            drawPolygon(c, geometry::footprint(o.box), kUnchanged, 1, 0.15);
+            ++n_unchanged;
+        }
     int n_removed = 0, n_moved = 0, n_added = 0;
     for (const auto& ch : changes) {
         if (ch.kind == "removed" && ch.before) {
@@ -59,8 +66,8 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     drawScaleBar(c);
     std::vector<std::pair<std::string, cv::Scalar>> legend{{"removed (" + std::to_string(n_removed) + ")", kRemoved},
                                                            {"moved (" + std::to_string(n_moved) + ")", kMoved},
-                                                           {"added (" + std::to_string(n_added) + ")", kAdded}};
-    for (const auto& item : classLegend(map, present)) legend.push_back(item);
+                                                           {"added (" + std::to_string(n_added) + ")", kAdded},
+                                                           {"unchanged (" + std::to_string(n_unchanged) + ")", kUnchanged}};
     drawLegend(c, legend);
     return c.image;
 }

@@ -43,8 +43,8 @@ cv::Mat3b drawObjectMap(const mrpt::maps::COccupancyGridMap2D& floorplan, const 
 cv::Mat3b drawMapEvaluation(const world::World& ground_truth, const world::World& map, const MapMetrics& metrics);
 
 /// A change report over the floor plan (simp-map --update's M/changes.png): the updated map's
-/// objects thin in their class colour, removed objects red and crossed out, moved objects orange
-/// (old place outlined, new place filled, an arrow between), added objects green and filled.
+/// unchanged objects thin in grey, removed objects red and crossed out, moved objects orange (old
+/// place outlined, new place filled, an arrow between), added objects green and filled; counts in the legend.
 cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::ObjectMapData& map,
                         const std::vector<world::ChangeRecord>& changes);
 
