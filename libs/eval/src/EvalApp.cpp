@@ -18,6 +18,9 @@ const std::map<std::string, std::map<std::string, bool>>& knownOptions() {
          {{"--gt", true}, {"--map", true}, {"--json", false}, {"--png", true}, {"--config", true},
           {"--max-center-dist", true}, {"--classes", true}}},
         {"plot-map", {{"--world", true}, {"--png", true}}},
+        {"changes",
+         {{"--truth", true}, {"--report", true}, {"--json", false}, {"--max-center-dist", true}, {"--classes", true},
+          {"--before-world", true}, {"--before-map", true}, {"--visited", true}}},
         {"batch", {{"--config", true}, {"--out", true}, {"--cores", true}}},
     };
     return k;
@@ -35,6 +38,12 @@ std::string EvalApp::usage() {
            "  simp-eval map --gt W --map M [--json] [--png F] [--config INI] [--max-center-dist M]\n"
            "                [--classes a,b,...]   (evaluate only these classes)\n"
            "      per-class footprint IoU, precision, recall of the object map M against W (gate 1.0 m)\n"
+           "  simp-eval changes --truth Q/changes.json --report M/changes.json [--json] [--max-center-dist M]\n"
+           "                    [--classes a,b,...] [--before-world W --before-map M0] [--visited TUM]\n"
+           "      precision and recall per kind of change: removed / moved matched by id_before, added by class\n"
+           "      and centre distance (gate 1.0 m); --before-world/--before-map: the report's ids are those of a\n"
+           "      built map M0, matched to W's objects by class and centre distance; --visited Q/groundtruth.tum\n"
+           "      (with --before-world): only changes in the rooms of W the trajectory entered\n"
            "  simp-eval plot-map --world W --png F\n"
            "      the object map of W over its floor plan, boxes coloured by class\n"
            "  simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]\n"
@@ -52,7 +61,7 @@ void EvalApp::initialize(int argc, const char* const* argv) {
     command_.clear();
     options_.clear();
     help_ = false;
-    if (argc < 2) throw std::invalid_argument("missing sub-command (traj, map, plot-map, batch); see --help");
+    if (argc < 2) throw std::invalid_argument("missing sub-command (traj, map, changes, plot-map, batch); see --help");
     command_ = argv[1];
     if (command_ == "--help" || command_ == "-h" || command_ == "help") {
         help_ = true;
@@ -60,7 +69,7 @@ void EvalApp::initialize(int argc, const char* const* argv) {
     }
     const auto known = knownOptions().find(command_);
     if (known == knownOptions().end())
-        throw std::invalid_argument("unknown sub-command '" + command_ + "' (traj, map, plot-map, batch); see --help");
+        throw std::invalid_argument("unknown sub-command '" + command_ + "' (traj, map, changes, plot-map, batch); see --help");
     for (int i = 2; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--help" || a == "-h") {
@@ -100,6 +109,7 @@ int EvalApp::run(std::ostream& out, std::ostream& err) {
     if (command_ == "traj") return runTraj(out);
     if (command_ == "map") return runMap(out);
     if (command_ == "plot-map") return runPlotMap(out);
+    if (command_ == "changes") return runChanges(out);
     if (command_ == "batch") return runBatch(out, err);
     throw std::logic_error("simp-eval: initialize() was not called");
 }

@@ -6,6 +6,7 @@
 #include <simp/eval/BatchMaps.h>
 #include <simp/eval/BatchRunner.h>
 #include <simp/eval/BatchTables.h>
+#include <simp/eval/ChangeMetrics.h>
 #include <simp/eval/Canvas.h>
 #include <simp/eval/EvalApp.h>
 #include <simp/eval/MapMetrics.h>
@@ -126,6 +127,54 @@ int EvalApp::runMap(std::ostream& out) {
         writeFigure(options_.at("--png"), drawMapEvaluation(gt, map, m), out);
     }
     if (has("--json")) out << toJson(m).dump() << "\n";
+    return 0;
+}
+
+int EvalApp::runChanges(std::ostream& out) {
+    const std::string truth_path = required("--truth"), report_path = required("--report");
+    requireFile(truth_path, "true changes");
+    requireFile(report_path, "change report");
+    ChangeMatchParams p;
+    p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m, 1e-6, 100);
+    if (has("--classes")) {
+        std::stringstream list(options_.at("--classes"));
+        for (std::string name; std::getline(list, name, ',');)
+            if (!name.empty()) p.classes.push_back(name);
+        if (p.classes.empty()) throw std::invalid_argument("simp-eval changes: --classes needs at least one class name");
+    }
+    if (has("--before-world") != has("--before-map"))
+        throw std::invalid_argument("simp-eval changes: --before-world and --before-map go together");
+    const auto truth = world::loadChangesFile(truth_path);
+    const auto report = world::loadChangesFile(report_path);
+    world::World w, m0;
+    BeforeMaps before;
+    if (has("--before-world")) {
+        requireDir(options_.at("--before-world"), "before world");
+        requireDir(options_.at("--before-map"), "before map");
+        w = world::loadWorld(options_.at("--before-world"));
+        m0 = world::loadWorld(options_.at("--before-map"));
+        before.world = &w.objects;
+        before.map = &m0.objects;
+    }
+    if (has("--visited")) {
+        if (!before.world) throw std::invalid_argument("simp-eval changes: --visited needs --before-world (its rooms.png)");
+        requireFile(options_.at("--visited"), "visited trajectory");
+        if (w.rooms.empty())
+            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + options_.at("--before-world") +
+                                        "' has no rooms.png");
+        p.rooms = &w.rooms;
+        p.visited_rooms = visitedRooms(w.rooms, options_.at("--visited"));
+    }
+    const ChangeScores s = scoreChanges(truth, report, p, before);
+    out << "change evaluation: " << report_path << " against " << truth_path << " (added: centre gate "
+        << fmt(p.max_center_dist_m, 2) << " m)\n\n"
+        << changeMarkdownTable(s);
+    if (before.world)
+        out << "\nbefore map '" << options_.at("--before-map") << "': " << s.truth_not_in_map
+            << " true removals of objects it never had (dropped), " << s.ignored_reports
+            << " reports about its ghosts or objects it had missed (ignored)\n";
+    if (p.rooms) out << "scored: changes in the " << p.visited_rooms.size() << " rooms the trajectory entered\n";
+    if (has("--json")) out << toJson(s).dump() << "\n";
     return 0;
 }
 

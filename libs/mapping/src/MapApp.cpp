@@ -35,6 +35,10 @@ bool MapApp::initialize(int argc, const char* const* argv) {
     TCLAP::ValueArg<std::string> scene("", "3dscene",
                                        "also write an MRPT .3Dscene (SceneViewer3D): floor plan, built objects, poses",
                                        false, "", "F", cmd);
+    TCLAP::ValueArg<std::string> update("", "update",
+                                        "update the map M0 of an earlier session: writes the updated map, "
+                                        "M/changes.json and M/changes.png (doc/mapping.md)",
+                                        false, "", "M0", cmd);
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--help" || a == "-h" || a == "--version") {
@@ -54,6 +58,7 @@ bool MapApp::initialize(int argc, const char* const* argv) {
     a.config_path = config.getValue();
     a.odometry_only = odom.getValue();
     a.scene_path = scene.getValue();
+    a.update_dir = update.getValue();
     initialize(a);
     return true;
 }
@@ -64,6 +69,10 @@ void MapApp::initialize(const MapAppArgs& args) {
     if (!fs::exists(args.rawlog_path)) throw std::runtime_error("rawlog '" + args.rawlog_path + "' does not exist");
     if (!fs::exists(args.poses_path)) throw std::runtime_error("poses file '" + args.poses_path + "' does not exist");
     if (args.out_dir.empty()) throw std::invalid_argument("--out must not be empty");
+    if (!args.update_dir.empty() && !fs::is_directory(args.update_dir))
+        throw std::runtime_error("--update map '" + args.update_dir + "' " +
+                                 (fs::exists(args.update_dir) ? "is not a directory" : "does not exist") +
+                                 " (expected a world directory written by simp-map)");
     MappingOptions opts;
     if (!args.config_path.empty()) {
         const io::StrictIni ini(args.config_path);  // exists, is a file, is an .ini
@@ -92,21 +101,48 @@ world::World MapApp::loadFloorPlanWorld() const {
     return w;
 }
 
+world::World MapApp::loadEarlierMap() const {
+    try {
+        return world::loadWorld(m_args.update_dir);
+    } catch (const std::exception& e) {
+        throw std::runtime_error("--update map '" + m_args.update_dir + "': " + e.what());
+    }
+}
+
 void MapApp::run() {
     std::ostream& out = *log;
     world::World w = loadFloorPlanWorld();
     out << "simp-map: world '" << m_args.world_dir << "': floor plan " << w.floorplan.getSizeX() << "x"
         << w.floorplan.getSizeY() << " cells, " << (w.rooms.empty() ? "no rooms.png (segmenting rooms)" : "rooms.png")
         << ", " << w.objects.class_names.size() << " classes (its " << w.objects.objects.size()
-        << " objects are not used)\n";
+        << " objects are not used" << (m_args.update_dir.empty() ? "" : "; the map to update is --update's") << ")\n";
 
-    // Start from an empty map with W's class list and class noise models.
+    // Start from an empty map with W's class list and class noise models, or from M0 (--update).
     world::ObjectMapData start;
     start.class_names = w.objects.class_names;
     start.class_noise = w.objects.class_noise;
     start.rooms = w.objects.rooms;
     start.room_categories = w.objects.room_categories;
-    m_builder.setMap(start);
+    world::ObjectMapData m0;
+    const bool updating = !m_args.update_dir.empty();
+    if (updating) {
+        m0 = loadEarlierMap().objects;
+        start = m0;
+        // Class noise M0 lacks (a map from elsewhere) is taken from W.
+        start.class_noise.resize(start.class_names.size());
+        for (std::size_t c = 0; c < start.class_names.size(); ++c)
+            if (!start.class_noise[c])
+                if (const int k = w.objects.classId(start.class_names[c]); k >= 0)
+                    start.class_noise[c] = w.objects.class_noise.at(static_cast<std::size_t>(k));
+        out << "simp-map: updating the map '" << m_args.update_dir << "' of an earlier session (" << m0.objects.size()
+            << " objects)\n";
+    }
+    try {
+        m_builder.setMap(start, updating);
+    } catch (const std::exception& e) {
+        if (!updating) throw;
+        throw std::runtime_error("--update map '" + m_args.update_dir + "/objects.json': " + e.what());
+    }
     m_builder.setFloorPlan(w.floorplan, w.rooms);
     if (m_builder.options().wall_align == WallAlignMode::Auto && !m_builder.wallAlignmentActive())
         out << "simp-map: note: the floor plan of '" << m_args.world_dir
@@ -156,9 +192,27 @@ void MapApp::run() {
     world::World result;
     result.floorplan = w.floorplan;
     result.rooms = m_builder.rooms();
-    result.objects = m_builder.confirmedMap();
+    m_update = {};
+    if (updating) {
+        m_update = detectChanges(m0, m_builder);
+        result.objects = m_update.map;
+    } else {
+        result.objects = m_builder.confirmedMap();
+    }
     world::saveWorld(result, m_args.out_dir);
     eval::writePng((fs::path(m_args.out_dir) / "map.png").string(), eval::drawObjectMap(result.floorplan, result.objects));
+    if (updating) {
+        const fs::path dir(m_args.out_dir);
+        world::saveChangesFile(m_update.changes, (dir / "changes.json").string());
+        eval::writePng((dir / "changes.png").string(),
+                       eval::drawChangeMap(result.floorplan, result.objects, m_update.changes));
+        std::map<std::string, int> per_kind;
+        for (const auto& c : m_update.changes) ++per_kind[c.kind];
+        out << "simp-map: changes against '" << m_args.update_dir << "': " << per_kind["removed"] << " removed, "
+            << per_kind["moved"] << " moved, " << per_kind["added"] << " added; " << m_update.unseen
+            << " objects of the earlier map not in view this session (kept); " << (dir / "changes.json").string()
+            << ", " << (dir / "changes.png").string() << "\n";
+    }
     if (!m_args.scene_path.empty()) {
         eval::MapLayers layers;
         layers.floorplan = &result.floorplan;

@@ -155,6 +155,11 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "default_min_confidence", default_filter.min_confidence);
     readDouble(c, s, "default_min_range_m", default_filter.min_range_m);
     readDouble(c, s, "default_max_range_m", default_filter.max_range_m);
+    readInt(c, s, "update_min_missed_windows", update_min_missed_windows);
+    readDouble(c, s, "update_max_seen_fraction", update_max_seen_fraction);
+    readDouble(c, s, "update_move_max_distance_m", update_move_max_distance_m);
+    readDouble(c, s, "update_min_move_m", update_min_move_m);
+    readInt(c, s, "update_min_new_windows", update_min_new_windows);
     readDouble(c, s, "room_door_width_m", room_door_width_m);
     readDouble(c, s, "room_min_area_m2", room_min_area_m2);
     readDouble(c, s, "room_search_radius_m", room_search_radius_m);
@@ -215,6 +220,15 @@ void MappingOptions::validate() const {
     requireRange(default_fy_px, 1e-3, 1e6, "default_fy_px");
     requireFinite(default_cx_px, "default_cx_px");
     requireFinite(default_cy_px, "default_cy_px");
+    requireRange(update_min_missed_windows, 1, 1e6, "update_min_missed_windows");
+    requireRange(update_max_seen_fraction, 0.0, 1.0, "update_max_seen_fraction");
+    requireRange(update_move_max_distance_m, 0.0, 100.0, "update_move_max_distance_m");
+    requireRange(update_min_move_m, 0.0, 100.0, "update_min_move_m");
+    requireRange(update_min_new_windows, 1, 1e6, "update_min_new_windows");
+    if (update_min_move_m > update_move_max_distance_m)
+        throw std::invalid_argument("mapping option update_min_move_m (" + std::to_string(update_min_move_m) +
+                                    ") must not exceed update_move_max_distance_m (" +
+                                    std::to_string(update_move_max_distance_m) + ")");
     requireRange(room_door_width_m, 0.0, 100.0, "room_door_width_m");
     requireRange(room_min_area_m2, 0.0, 1e6, "room_min_area_m2");
     requireRange(room_search_radius_m, 0.0, 100.0, "room_search_radius_m");
@@ -265,6 +279,9 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
     o << "near_plane_m          = " << near_plane_m << " m\n";
     o << "default K (fx fy cx cy) = " << default_fx_px << " " << default_fy_px << " " << default_cx_px << " "
       << default_cy_px << " px\n";
+    o << "update: removed after >= " << update_min_missed_windows << " missed windows with seen fraction < "
+      << update_max_seen_fraction << "; moved within " << update_move_max_distance_m << " m, re-estimated below "
+      << update_min_move_m << " m; new objects after " << update_min_new_windows << " windows\n";
     o << "room_update_policy    = " << (room_policy == RoomUpdatePolicy::CurrentRoom ? "current_room" : "all") << "\n";
     o << "room_door_width_m     = " << room_door_width_m << " m\n";
     o << "room_min_area_m2      = " << room_min_area_m2 << " m^2\n";

@@ -36,7 +36,7 @@ void ObjectMapBuilder::setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floor
     for (auto& o : m_g.objects) o.room_id = roomOf(o.box.center.x(), o.box.center.y());
 }
 
-void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
+void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_session) {
     world::ObjectMapData g = map;
     g.class_noise.resize(g.class_names.size());
     std::int64_t max_id = 0;
@@ -57,6 +57,9 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_first_built_id = m_next_id;
     m_estimates.clear();
     m_windows_matched.clear();
+    m_windows_missed.clear();
+    m_purged_given.clear();
+    m_earlier_session = earlier_session;
     m_local.clear();
     m_window_active.clear();
     m_window_candidates.clear();
@@ -64,6 +67,13 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map) {
     m_window_steps = 0;
     m_last_step.reset();
     m_groups_valid = false;
+}
+
+SessionEvidence ObjectMapBuilder::evidenceOf(std::int64_t id) const {
+    SessionEvidence e;
+    if (const auto it = m_windows_matched.find(id); it != m_windows_matched.end()) e.windows_matched = it->second;
+    if (const auto it = m_windows_missed.find(id); it != m_windows_missed.end()) e.windows_missed = it->second;
+    return e;
 }
 
 world::ObjectMapData ObjectMapBuilder::confirmedMap() const {

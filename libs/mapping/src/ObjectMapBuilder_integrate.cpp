@@ -126,7 +126,14 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
             for (std::size_t b = a + 1; b < idx.size(); ++b) {
                 const std::size_t i = idx[a], j = idx[b];
                 if (removed[i] || removed[j] || m_g.objects[i].class_id != m_g.objects[j].class_id) continue;
-                const std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
+                std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
+                if (m_earlier_session) {
+                    const bool gi = isGivenObject(m_g.objects[i].id), gj = isGivenObject(m_g.objects[j].id);
+                    // An earlier object this session has not matched may have been moved: the new
+                    // object near it is its candidate new place, not its twin (MapUpdate.h).
+                    if (gi != gj && evidenceOf(m_g.objects[gi ? i : j].id).windows_matched == 0) continue;
+                    if (gi != gj) r = gi ? i : j;  // the earlier object keeps its id
+                }
                 const std::size_t o = r == i ? j : i;
                 const double c = duplicateCost(m_g.objects[r].box, noiseOfObject(m_g.objects[r]), m_g.objects[r].class_id,
                                                m_g.objects[o].box);
@@ -137,6 +144,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
+        m_windows_missed[k.id] += m_windows_missed[d.id];
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -191,6 +199,7 @@ void ObjectMapBuilder::setEstimate(world::MapObject& o, const geometry::Box3D& e
 void ObjectMapBuilder::forget(std::int64_t id) {
     m_estimates.erase(id);
     m_windows_matched.erase(id);
+    m_windows_missed.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -275,7 +284,10 @@ void ObjectMapBuilder::flush() {
     // n_skip for active map objects that no prediction was associated with.
     for (const std::int64_t id : m_window_active)
         if (!matched.count(id))
-            if (const auto it = index_of.find(id); it != index_of.end()) ++m_g.objects[it->second].n_skip;
+            if (const auto it = index_of.find(id); it != index_of.end()) {
+                ++m_g.objects[it->second].n_skip;
+                ++m_windows_missed[id];
+            }
 
     // Purge when n_match / n_skip < tau_purge.
     const auto purge = [&](const world::MapObject& o) {
@@ -283,7 +295,10 @@ void ObjectMapBuilder::flush() {
     };
     const std::size_t before = m_g.objects.size();
     for (const auto& o : m_g.objects)
-        if (purge(o)) forget(o.id);
+        if (purge(o)) {
+            if (isGivenObject(o.id)) m_purged_given[o.id] = evidenceOf(o.id);
+            forget(o.id);
+        }
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());

@@ -5,6 +5,7 @@
 ///
 ///   simp-eval traj --gt GT.tum --est EST.tum [--json] [--png F [--world W]] [--config INI]
 ///   simp-eval map --gt W --map M [--json] [--png F] [--config INI] [--max-center-dist M]
+///   simp-eval changes --truth Q/changes.json --report M/changes.json [--json] [--before-world W --before-map M0]
 ///   simp-eval plot-map --world W --png F
 ///   simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]
 
@@ -41,6 +42,7 @@ private:
     int runTraj(std::ostream& out);
     int runMap(std::ostream& out);
     int runPlotMap(std::ostream& out);
+    int runChanges(std::ostream& out);
     int runBatch(std::ostream& out, std::ostream& err);
 };
 

@@ -6,6 +6,7 @@
 #include <simp/eval/MapLayers.h>
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/TrajectoryMetrics.h>
+#include <simp/world/ChangesFile.h>
 #include <simp/world/World.h>
 
 #include <opencv2/core.hpp>
@@ -40,5 +41,11 @@ cv::Mat3b drawObjectMap(const mrpt::maps::COccupancyGridMap2D& floorplan, const 
 /// A map evaluation: matched ground-truth/map objects green, missed ground-truth objects
 /// blue, false map objects red, over the ground truth's floor plan, a scale bar.
 cv::Mat3b drawMapEvaluation(const world::World& ground_truth, const world::World& map, const MapMetrics& metrics);
+
+/// A change report over the floor plan (simp-map --update's M/changes.png): the updated map's
+/// unchanged objects thin in grey, removed objects red and crossed out, moved objects orange (old
+/// place outlined, new place filled, an arrow between), added objects green and filled; counts in the legend.
+cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::ObjectMapData& map,
+                        const std::vector<world::ChangeRecord>& changes);
 
 }  // namespace simp::eval

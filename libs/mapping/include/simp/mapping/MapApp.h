@@ -2,10 +2,11 @@
 /// \file MapApp.h
 /// The simp-map program as a library class (thin main, testable in-process):
 ///   simp-map --world W --rawlog Q/sequence.rawlog --poses Q/groundtruth.tum --out M
-///            [--config INI] [--odometry-only] [--3dscene F]
+///            [--config INI] [--odometry-only] [--3dscene F] [--update M0]
 /// reads the floor plan (+ rooms) of W, maps the 3D detections of the rawlog at the poses of
 /// the TUM file (or of the integrated odometry) and writes the world directory M.
 
+#include <simp/mapping/MapUpdate.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/world/World.h>
 
@@ -22,6 +23,7 @@ struct MapAppArgs {
     std::string config_path;   ///< optional .ini, section [mapping]
     bool odometry_only = false;  ///< poses from the rawlog's odometry, starting at the first TUM pose
     std::string scene_path;    ///< --3dscene: MRPT .3Dscene of the built map (empty = none)
+    std::string update_dir;    ///< --update M0: the map of an earlier session to update (empty = build anew)
 };
 
 class MapApp {
@@ -41,6 +43,8 @@ class MapApp {
     const MapAppArgs& args() const { return m_args; }
     std::size_t framesMapped() const { return m_frames_mapped; }
     std::size_t framesWithoutPose() const { return m_frames_without_pose; }
+    /// --update: the changes detected against M0 (empty otherwise).
+    const MapUpdateResult& update() const { return m_update; }
 
     std::ostream* log;  ///< progress and summary (default std::cout)
 
@@ -48,10 +52,13 @@ class MapApp {
 
    private:
     world::World loadFloorPlanWorld() const;
+    /// The earlier map M0 (--update), its errors prefixed with "--update map 'M0'".
+    world::World loadEarlierMap() const;
 
     MapAppArgs m_args;
     ObjectMapBuilder m_builder;
     std::size_t m_frames_mapped = 0, m_frames_without_pose = 0;
+    MapUpdateResult m_update;
 };
 
 }  // namespace simp::mapping

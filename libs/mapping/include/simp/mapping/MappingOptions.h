@@ -144,6 +144,22 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double default_cy_px = 237.79;
     /// @}
 
+    /// @name Map update across sessions (simp-map --update; MapUpdate.h, doc/mapping.md "Map update")
+    /// An object of the earlier map is removed on this session's evidence alone, whatever its
+    /// history: it was active (in view, in range, not occluded: I_active) in at least
+    /// update_min_missed_windows integration windows without a match, and matched in fewer than
+    /// update_max_seen_fraction of the windows that expected it. A removed object with a new
+    /// object of its class within update_move_max_distance_m is reported as moved.
+    /// @{
+    int update_min_missed_windows = 3;         ///< windows; one or two misses are detector misses
+    double update_max_seen_fraction = 0.2;     ///< matched / (matched + missed) below this = gone
+    double update_move_max_distance_m = 1.5;   ///< m, planar centre distance old -> new of a move
+    double update_min_move_m = 0.2;            ///< m; a closer pair is the object re-estimated, no change
+    /// A new object of the session enters the updated map (and the report, as added or as the new
+    /// place of a moved object) once matched in this many integration windows.
+    int update_min_new_windows = 10;
+    /// @}
+
     /// @name Detection filter
     /// @{
     ClassFilter default_filter;                      ///< classes not listed in per_class

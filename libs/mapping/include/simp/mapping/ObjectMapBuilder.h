@@ -14,6 +14,7 @@
 #include <simp/world/World.h>
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -38,6 +39,14 @@ struct BuilderStats {
     std::size_t duplicates_merged = 0;   ///< map objects merged into another one (merge_duplicates)
 };
 
+/// What this session saw of one map object: integration windows in which it was matched (or
+/// made), and windows in which it was active (expected in view) and nothing was matched to it.
+/// The evidence of a map update (MapUpdate.h), independent of the object's earlier history.
+struct SessionEvidence {
+    int windows_matched = 0;
+    int windows_missed = 0;
+};
+
 /// One object of the short-term local map m^_g.
 struct LocalObject {
     int class_id = 0;     ///< index into the map's class_names
@@ -56,8 +65,12 @@ class ObjectMapBuilder {
     /// Recomputes the room id of every map object.
     void setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms);
     /// Replaces the global map m_g (class list, class noise, objects); pending local map dropped.
+    /// `earlier_session`: the map of an earlier session being updated (simp-map --update): a
+    /// duplicate pair of one of its objects and a new one merges only when this session matched
+    /// the old object (else the new one may be the old one displaced, MapUpdate.h), and the old
+    /// object keeps its id.
     /// \throw std::invalid_argument naming the object index when a box is invalid or its class id unknown.
-    void setMap(const world::ObjectMapData& map);
+    void setMap(const world::ObjectMapData& map, bool earlier_session = false);
 
     /// Inserts the detections of one camera frame taken with the robot at `robot_pose` (world).
     /// Several cameras of one time step are inserted one after another with the same pose.
@@ -74,6 +87,12 @@ class ObjectMapBuilder {
     /// than min_confirmed_matches detections (objects of the map given to setMap always stay).
     world::ObjectMapData confirmedMap() const;
     const std::vector<LocalObject>& localMap() const { return m_local; }
+    /// True for the ids of the map given to setMap (the earlier session's objects).
+    bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
+    /// This session's evidence about a map object (zero when none).
+    SessionEvidence evidenceOf(std::int64_t id) const;
+    /// Objects of the given map that the purge rule removed during this session, with their evidence.
+    const std::map<std::int64_t, SessionEvidence>& purgedGivenObjects() const { return m_purged_given; }
     const world::RoomMap& rooms() const { return m_rooms; }
     const BuilderStats& stats() const { return m_stats; }
     TOptions& options() { return m_options; }
@@ -137,6 +156,9 @@ class ObjectMapBuilder {
     /// plus the class bias (the box minus nothing when the option is off).
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
+    std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
+    std::map<std::int64_t, SessionEvidence> m_purged_given;   ///< purged objects of setMap's map
+    bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.

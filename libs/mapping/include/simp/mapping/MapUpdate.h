@@ -1,0 +1,41 @@
+#pragma once
+/// \file MapUpdate.h
+/// Map update across sessions (simp-map --update, doc/mapping.md "Map update across sessions"):
+/// after an ObjectMapBuilder was given the map of an earlier session (setMap(m0, true)) and this
+/// session's detections, decides what changed and writes the updated map.
+///
+/// Rule (MappingOptions update_*):
+///  - removed: an object of m0 that this session expected to see (I_active: in view, in range,
+///    not occluded, the builder's own visibility) in >= update_min_missed_windows integration
+///    windows without a match, and matched in < update_max_seen_fraction of those windows; or
+///    that the builder's purge rule removed. Only this session's evidence counts, so an object
+///    with a long history goes as readily as a new one.
+///  - moved: a removed object paired with a new (confirmed) object of the same class whose centre
+///    is within update_move_max_distance_m (closest pairs first); it keeps its m0 id. A pair
+///    closer than update_min_move_m is the object re-estimated: no change, the new box replaces it.
+///  - added: the other new confirmed objects (new ids, above every id of m0).
+///  New objects count (and enter the updated map) only once matched in update_min_new_windows
+///  integration windows: the earlier map already explains the scene, so a twin made of a few
+///  windows' errors must not become a change.
+/// Objects of m0 the session never expected to see stay as they were.
+
+#include <simp/mapping/ObjectMapBuilder.h>
+#include <simp/world/ChangesFile.h>
+#include <simp/world/ObjectMapData.h>
+
+#include <vector>
+
+namespace simp::mapping {
+
+struct MapUpdateResult {
+    world::ObjectMapData map;                 ///< the updated map (builder's confirmed map minus removed objects)
+    std::vector<world::ChangeRecord> changes; ///< removed, moved, added, each with a confidence
+    std::size_t unseen = 0;                   ///< objects of m0 this session never expected to see (kept)
+};
+
+/// The changes between `m0` (the map given to the builder's setMap) and what the builder made of it.
+/// Confidence: removed = 1 - (matched + 1) / (missed + 2) (Laplace estimate of "not there" from
+/// the session's windows); added = w / (w + 1) with w its matched windows; moved = the smaller of both.
+MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder);
+
+}  // namespace simp::mapping

@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The map-update battery of doc/mapping.md "Map update across sessions" (issue #16).
+#   bash tests/battery/map_update_battery.sh OUT
+# Per built-in office world (seeds $WORLD_SEEDS): a first coverage session builds M0 with simp-map;
+# a second coverage session after --changes $CHANGES (and one after --changes 0) updates M0 with
+# simp-map --update; simp-eval changes scores the change report against the simulator's truth
+# (removed / moved matched through M0's objects, see doc/evaluation.md) and simp-eval map scores the
+# updated map against the changed world Q/world. Prints one TSV row per world and run, then the
+# means. Runs one process at a time (shared 2-core machine). Same inputs, same output.
+set -euo pipefail
+OUT=${1:?usage: map_update_battery.sh OUT}
+B=${B:-build/bin}
+WORLD_SEEDS=${WORLD_SEEDS:-"1 2 3 4 5 6 7 8"}
+DURATION=${DURATION:-600}
+CHANGES=${CHANGES:-0.3}
+CONFIG=${CONFIG:-config_ini/mapping.ini}
+CLASSES=${CLASSES:-"board,cabinet,desk,drawers,fire extinguisher,oven,potted plant,sink,sofa,table"}  # Table I
+STAGE=${STAGE:-all}   # data: only simulate and build M0; all: also update and score
+mkdir -p "$OUT"
+rows="$OUT/runs.jsonl"; : > "$rows"
+for ws in $WORLD_SEEDS; do
+  W="$OUT/w$ws"; Q1="$OUT/q1_w$ws"; M0="$OUT/m0_w$ws"
+  [ -d "$W" ] || "$B/simp-sim" world --builtin office --seed "$ws" --out "$W" >/dev/null
+  # Session 1: the map of an earlier visit.
+  [ -f "$Q1/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$W" --seed "$((ws + 100))" --out "$Q1" \
+      --duration "$DURATION" --coverage >/dev/null
+  [ -f "$M0/objects.json" ] || "$B/simp-map" --world "$W" --rawlog "$Q1/sequence.rawlog" --poses "$Q1/groundtruth.tum" \
+      --out "$M0" --config "$CONFIG" >/dev/null
+  for ch in "$CHANGES" 0; do
+    Q="$OUT/q2_w${ws}_c$ch"; M="$OUT/m_w${ws}_c$ch"
+    [ -f "$Q/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$W" --seed "$((ws + 200))" --out "$Q" \
+        --duration "$DURATION" --coverage --changes "$ch" >/dev/null
+    [ "$STAGE" = all ] || continue
+    "$B/simp-map" --world "$W" --rawlog "$Q/sequence.rawlog" --poses "$Q/groundtruth.tum" --update "$M0" --out "$M" \
+        --config "$CONFIG" > "$M.log"
+    ev=( "$B/simp-eval" changes --truth "$Q/changes.json" --report "$M/changes.json" --before-world "$W"
+         --before-map "$M0" --classes "$CLASSES" --json )
+    all=$("${ev[@]}" | tail -n 1)
+    vis=$("${ev[@]}" --visited "$Q/groundtruth.tum" | tail -n 1)
+    mp=$("$B/simp-eval" map --gt "$Q/world" --map "$M" --classes "$CLASSES" --json | tail -n 1)
+    echo "{\"world\": $ws, \"changes\": $ch, \"all\": $all, \"visited\": $vis, \"map\": $mp}" >> "$rows"
+  done
+done
+[ "$STAGE" = all ] || exit 0
+python3 - "$rows" <<'PY'
+import json, sys
+runs = [json.loads(l) for l in open(sys.argv[1])]
+kinds = ("removed", "moved", "added")
+print("world changes | scope   | removed P/R (true) | moved P/R (true) | added P/R (true) | map IoU Pr Rc")
+for r in runs:
+    for scope in ("all", "visited"):
+        e = r[scope]
+        cells = ["%.2f/%.2f (%d)" % (e[k]["precision"], e[k]["recall"], e[k]["n_true"]) for k in kinds]
+        print("%5d %7s | %-7s | %s | %.3f %.3f %.3f" % (r["world"], r["changes"], scope, " | ".join(cells),
+                                                     r["map"]["iou"], r["map"]["precision"], r["map"]["recall"]))
+for ch in sorted({r["changes"] for r in runs}):
+    rs = [r for r in runs if r["changes"] == ch]
+    print("\n--changes %s, %d worlds (pooled counts):" % (ch, len(rs)))
+    for scope in ("all", "visited"):
+        parts = []
+        for k in kinds:
+            t = sum(r[scope][k]["n_true"] for r in rs); rep = sum(r[scope][k]["n_reported"] for r in rs)
+            c = sum(r[scope][k]["n_correct"] for r in rs)
+            parts.append("%s P %.3f R %.3f (%d true, %d reported, %d correct)" % (k, c / rep if rep else 1, c / t if t else 1, t, rep, c))
+        print("  %-7s: %s" % (scope, "; ".join(parts)))
+    m = lambda key: sum(r["map"][key] for r in rs) / len(rs)
+    print("  updated map vs Q/world (mean over worlds): IoU %.3f, Pr %.3f, Rc %.3f" % (m("iou"), m("precision"), m("recall")))
+    if float(ch) == 0:
+        false = [sum(r["all"][k]["n_reported"] for k in kinds) for r in rs]
+        print("  false changes per world (Table I classes): %s, max %d" % (false, max(false)))
+PY

@@ -1,0 +1,188 @@
+// Map update across sessions (MapUpdate.h): an earlier map is updated with a second session's
+// detections; removed, moved and added objects are each reported as such, an unchanged world
+// reports nothing, and simp-map --update names a missing or malformed map.
+#include <gtest/gtest.h>
+#include <simp/io/Tum.h>
+#include <simp/mapping/MapApp.h>
+#include <simp/mapping/MapUpdate.h>
+#include <simp/world/World.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "common/ErrorOf.h"
+#include "MappingTestScene.h"
+
+using namespace simp::mapping;
+using simp::geometry::makeUprightBox;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<std::string> kClasses = {"table", "cabinet", "sofa"};
+// An 8 m x 6 m room; the robot circles its middle (radius 1.2 m), seeing every object.
+const test::TrueObject kTableA{0, makeUprightBox({1.4, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.3)};
+const test::TrueObject kCabinetB{1, makeUprightBox({6.6, 1.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)};
+const test::TrueObject kTableC{0, makeUprightBox({4.0, 5.0, 0.375}, {1.2, 0.8, 0.75}, 0.0)};
+// C moved 1 m along the wall; D a new sofa.
+const test::TrueObject kTableCMoved{0, makeUprightBox({5.0, 5.0, 0.375}, {1.2, 0.8, 0.75}, 0.0)};
+const test::TrueObject kSofaD{2, makeUprightBox({4.0, 0.9, 0.45}, {1.8, 0.9, 0.9}, 0.0)};
+
+/// Drives the builder around the circle `laps` times with detections of `truth` (seeded noise).
+void session(ObjectMapBuilder& b, const std::vector<test::TrueObject>& truth, int laps, unsigned seed) {
+    std::mt19937 rng(seed);
+    constexpr int kStepsPerLap = 80;
+    for (int s = 0; s < laps * kStepsPerLap; ++s) {
+        const double a = 2.0 * M_PI * s / kStepsPerLap;
+        const mrpt::poses::CPose3D pose(4.0 + 1.2 * std::cos(a), 3.0 + 1.2 * std::sin(a), 0, a + M_PI / 2, 0, 0);
+        const auto stamp = mrpt::Clock::fromDouble(1.6e9 + 0.2 * s);
+        for (auto& o : test::observe(truth, kClasses, pose, rng)) {
+            o.timestamp = stamp;
+            b.insert(o, pose);
+        }
+    }
+    b.flush();
+}
+
+/// The map of an earlier session: three laps, so every object has a long history (n_match in the
+/// hundreds: the purge rule alone would need twice as many misses).
+simp::world::ObjectMapData earlierMap(const mrpt::maps::COccupancyGridMap2D& plan) {
+    ObjectMapBuilder b(test::testOptions());
+    simp::world::ObjectMapData start;
+    start.class_names = kClasses;
+    start.class_noise.resize(kClasses.size());
+    b.setMap(start);
+    b.setFloorPlan(plan, {});
+    session(b, {kTableA, kCabinetB, kTableC}, 3, 1);
+    return b.confirmedMap();
+}
+
+const simp::world::MapObject* nearest(const simp::world::ObjectMapData& m, const test::TrueObject& t) {
+    const simp::world::MapObject* best = nullptr;
+    double d_best = 1e9;
+    for (const auto& o : m.objects) {
+        const double d = (o.box.center - t.box.center).head<2>().norm();
+        if (o.class_id == t.class_id && d < d_best) best = &o, d_best = d;
+    }
+    return best;
+}
+
+MapUpdateResult update(const simp::world::ObjectMapData& m0, const mrpt::maps::COccupancyGridMap2D& plan,
+                       const std::vector<test::TrueObject>& now) {
+    ObjectMapBuilder b(test::testOptions());
+    b.setMap(m0, true);
+    b.setFloorPlan(plan, {});
+    session(b, now, 1, 2);  // one lap: far fewer misses than the objects' earlier matches
+    return detectChanges(m0, b);
+}
+
+}  // namespace
+
+TEST(MapUpdate, RemovedMovedAndAddedObjectsAreEachReportedAsSuch) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan);
+    ASSERT_EQ(m0.objects.size(), 3u);
+    const auto* a = nearest(m0, kTableA);
+    const auto* b = nearest(m0, kCabinetB);
+    const auto* c = nearest(m0, kTableC);
+    ASSERT_TRUE(a && b && c);
+    EXPECT_GT(b->n_match, 100);  // a long history
+
+    const MapUpdateResult r = update(m0, plan, {kTableA, kTableCMoved, kSofaD});
+    ASSERT_EQ(r.changes.size(), 3u);
+    const auto& removed = r.changes[0];
+    EXPECT_EQ(removed.kind, "removed");
+    EXPECT_EQ(removed.id_before, b->id);
+    EXPECT_EQ(removed.class_name, "cabinet");
+    EXPECT_FALSE(removed.id_after.has_value());
+    const auto& moved = r.changes[1];
+    EXPECT_EQ(moved.kind, "moved");
+    EXPECT_EQ(moved.id_before, c->id);
+    EXPECT_EQ(moved.id_after, c->id);  // keeps its identity
+    ASSERT_TRUE(moved.after.has_value());
+    // Detection noise 0.05 m per axis averaged over hundreds of detections: the new place to a few cm.
+    EXPECT_NEAR((moved.after->center - kTableCMoved.box.center).head<2>().norm(), 0.0, 0.05);
+    const auto& added = r.changes[2];
+    EXPECT_EQ(added.kind, "added");
+    EXPECT_EQ(added.class_name, "sofa");
+    EXPECT_FALSE(added.id_before.has_value());
+    ASSERT_TRUE(added.id_after.has_value());
+    EXPECT_GT(*added.id_after, std::max({a->id, b->id, c->id}));  // a new id
+    EXPECT_NEAR((added.after->center - kSofaD.box.center).head<2>().norm(), 0.0, 0.05);
+    for (const auto& ch : r.changes) {
+        ASSERT_TRUE(ch.confidence.has_value());
+        EXPECT_GT(*ch.confidence, 0.5);
+        EXPECT_LE(*ch.confidence, 1.0);
+    }
+    // The updated map: A unchanged (same id), C at its new place under its id, D, no B.
+    ASSERT_EQ(r.map.objects.size(), 3u);
+    const auto* c_now = nearest(r.map, kTableCMoved);
+    ASSERT_TRUE(c_now);
+    EXPECT_EQ(c_now->id, c->id);
+    EXPECT_LT((c_now->box.center - kTableCMoved.box.center).head<2>().norm(), 0.05);
+    EXPECT_EQ(nearest(r.map, kTableA)->id, a->id);
+    EXPECT_EQ(nearest(r.map, kCabinetB), nullptr);
+    EXPECT_TRUE(nearest(r.map, kSofaD));
+}
+
+TEST(MapUpdate, AnUnchangedWorldReportsNothing) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan);
+    const MapUpdateResult r = update(m0, plan, {kTableA, kCabinetB, kTableC});
+    EXPECT_TRUE(r.changes.empty());
+    ASSERT_EQ(r.map.objects.size(), m0.objects.size());
+    for (const auto& o : m0.objects) {
+        const auto it = std::find_if(r.map.objects.begin(), r.map.objects.end(), [&](const auto& n) { return n.id == o.id; });
+        ASSERT_NE(it, r.map.objects.end());
+        EXPECT_LT((it->box.center - o.box.center).norm(), 0.05);
+    }
+}
+
+TEST(MapUpdate, SameInputSameReport) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan);
+    const auto r1 = update(m0, plan, {kTableA, kTableCMoved, kSofaD});
+    const auto r2 = update(m0, plan, {kTableA, kTableCMoved, kSofaD});
+    ASSERT_EQ(r1.changes.size(), r2.changes.size());
+    for (std::size_t i = 0; i < r1.changes.size(); ++i) {
+        EXPECT_EQ(r1.changes[i].kind, r2.changes[i].kind);
+        EXPECT_EQ(r1.changes[i].id_before, r2.changes[i].id_before);
+        EXPECT_EQ(r1.changes[i].confidence, r2.changes[i].confidence);
+    }
+}
+
+TEST(MapUpdate, MissingOrMalformedEarlierMapIsNamed) {
+    const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "mapping" / "update_bad";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    simp::world::World w;
+    w.floorplan = test::makeFloorPlan(8, 6);
+    w.objects.class_names = kClasses;
+    simp::world::saveWorld(w, (dir / "W").string());
+    std::ofstream((dir / "seq.rawlog").string()) << "";
+    simp::io::writeTum((dir / "gt.tum").string(), {{1.6e9, {4, 3, 0}}, {1.6e9 + 1, {4, 3, 0}}});
+
+    MapAppArgs a;
+    a.world_dir = (dir / "W").string();
+    a.rawlog_path = (dir / "seq.rawlog").string();
+    a.poses_path = (dir / "gt.tum").string();
+    a.out_dir = (dir / "M").string();
+    a.update_dir = (dir / "nowhere").string();
+    MapApp app;
+    std::string e = simp_test::errorOf([&] { app.initialize(a); });
+    EXPECT_NE(e.find("--update map '" + a.update_dir + "' does not exist"), std::string::npos) << e;
+
+    // A directory whose objects.json is broken: the error names the map and the file.
+    fs::create_directories(dir / "M0");
+    simp::world::saveWorld(w, (dir / "M0").string());
+    std::ofstream((dir / "M0" / "objects.json").string()) << "{\"format\": \"simp-objects\", \"objects\": [1,";
+    a.update_dir = (dir / "M0").string();
+    std::ostringstream log;
+    app.log = &log;
+    app.initialize(a);
+    e = simp_test::errorOf([&] { app.run(); });
+    EXPECT_NE(e.find("--update map '" + a.update_dir + "'"), std::string::npos) << e;
+    EXPECT_NE(e.find("objects.json"), std::string::npos) << e;
+}
