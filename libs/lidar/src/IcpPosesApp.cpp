@@ -89,25 +89,22 @@ void IcpPosesApp::run(std::ostream& out) {
     cfg.loadChecked([&](const io::StrictIni& c) { opts.loadFromConfig(c); });
     if (!std::filesystem::is_directory(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     const world::World world = world::loadWorld(world_dir);
+    const auto seq = localization::loadRawlogSequence(rawlog_path);
+    scans = 0;
+    for (const auto& f : seq.frames) scans += lastScan(*f.observations) ? 1 : 0;
+    if (scans == 0)
+        throw std::invalid_argument("rawlog '" + rawlog_path +
+                                    "' holds no mrpt::obs::CObservation2DRangeScan (simulate with simp-sim sequence --lidar)");
     const auto& grid = world.floorplan;
     const int cx = grid.x2idx(initial_pose.x), cy = grid.y2idx(initial_pose.y);
     if (cx < 0 || cy < 0 || cx >= static_cast<int>(grid.getSizeX()) || cy >= static_cast<int>(grid.getSizeY()) ||
         !(grid.getCell(cx, cy) > 0.5f))
         throw std::invalid_argument("option --initial-pose: (" + std::to_string(initial_pose.x) + ", " +
                                     std::to_string(initial_pose.y) + ") is not in the free space of '" + world_dir + "'");
-    const auto seq = localization::loadRawlogSequence(rawlog_path);
     IcpPoseTracker tracker(grid, opts);
     tracker.reset(initial_pose);
     poses.clear();
-    scans = 0;
-    for (const auto& f : seq.frames) {
-        const auto* scan = lastScan(*f.observations);
-        if (scan) ++scans;
-        poses.push_back({f.t_s, tracker.step(f.odometry_increment, scan)});
-    }
-    if (scans == 0)
-        throw std::invalid_argument("rawlog '" + rawlog_path +
-                                    "' holds no mrpt::obs::CObservation2DRangeScan (simulate with simp-sim sequence --lidar)");
+    for (const auto& f : seq.frames) poses.push_back({f.t_s, tracker.step(f.odometry_increment, lastScan(*f.observations))});
     accepted = tracker.accepted();
     io::writeTum(out_path, poses);
     out << "simp-icp-poses: " << poses.size() << " frames, " << scans << " scans (" << accepted << " aligned, "

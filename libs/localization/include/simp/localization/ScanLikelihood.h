@@ -21,9 +21,9 @@ struct LidarModelOptions {
     /// Exponent of the scan likelihood: log w += weight x log p(scan | x). With `simp+lidar` it is the
     /// scan's weight relative to the object model (whose exponent is 1); with `lidar` it tempers the
     /// sum over beams, which treats the beams as independent and is far too sure of itself.
-    double weight = 0.1;
+    double weight = 0.05;
     int decimation = 10;         ///< every n-th beam is weighed (1081 -> 109), COccupancyGridMap2D LF_decimation
-    double sigma_m = 0.2;        ///< std of a hit around the nearest wall (m), LF_stdHit
+    double sigma_m = 0.5;        ///< std of a hit around the nearest wall (m), LF_stdHit
     double z_hit = 0.9;          ///< weight of the hit model, LF_zHit
     double z_random = 0.1;       ///< weight of random returns (people, furniture not in the plan), LF_zRandom
     double max_range_m = 15.0;   ///< beams beyond are not weighed (m), LF_maxRange
