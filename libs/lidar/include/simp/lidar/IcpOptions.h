@@ -19,8 +19,8 @@ struct IcpPosesOptions {
     double smallest_threshold_dist_m = 0.05;  ///< CICP smallestThresholdDist (m)
     int min_points = 30;                 ///< fewer scan points: odometry only at this step
     double min_goodness = 0.1;           ///< CICP goodness (share of paired points) below: rejected
-    double max_correction_m = 0.05;      ///< an alignment moving the odometry prediction farther: rejected (m)
-    double max_correction_deg = 2.0;     ///< same for the heading (deg)
+    double max_correction_m = 0.1;       ///< an alignment moving the odometry prediction farther: rejected (m)
+    double max_correction_deg = 5.0;     ///< same for the heading (deg)
 
     /// Reads [section]; absent keys keep their defaults; bad values throw naming file, section and key.
     void loadFromConfig(const io::StrictIni& cfg, const std::string& section = "ICP");
