@@ -139,6 +139,16 @@ void expectSame(const SensorResettingParams& a, const SensorResettingParams& b) 
     SIMP_EXPECT_SAME(sampler.square_ratio);
 }
 
+void expectSame(const LidarModelOptions& a, const LidarModelOptions& b) {
+    SIMP_EXPECT_SAME(weight);
+    SIMP_EXPECT_SAME(decimation);
+    SIMP_EXPECT_SAME(sigma_m);
+    SIMP_EXPECT_SAME(z_hit);
+    SIMP_EXPECT_SAME(z_random);
+    SIMP_EXPECT_SAME(max_range_m);
+    SIMP_EXPECT_SAME(max_corr_distance_m);
+}
+
 void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b) {
     SIMP_EXPECT_SAME(decorrelation_distance_m);
     SIMP_EXPECT_SAME(min_weight);
@@ -197,6 +207,7 @@ TEST(LocalizeDefaults, CompiledInDefaultsEqualSimpIniFieldByField) {
     expectSame(a.options.novelty, b.options.novelty);
     expectSame(a.options.resetting, b.options.resetting);
     expectSame(a.options.search, b.options.search);
+    expectSame(a.options.lidar, b.options.lidar);
     expectSame(makeObjectMap(*a.params, "")->likelihoodOptions, makeObjectMap(*b.params, kSimpIni)->likelihoodOptions);
     EXPECT_TRUE(a.config_notes.empty());
     EXPECT_TRUE(b.config_notes.empty());

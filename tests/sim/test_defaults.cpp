@@ -107,6 +107,16 @@ void expectSame(const simp::sim::SimParams& a, const simp::sim::SimParams& b) {
     SIMP_EXPECT_SAME(changes.shift_max_m);
     SIMP_EXPECT_SAME(changes.rotation_std_deg);
     SIMP_EXPECT_SAME(changes.door_close_fraction);
+    SIMP_EXPECT_SAME(lidar.enabled);
+    SIMP_EXPECT_SAME(lidar.rate_hz);
+    SIMP_EXPECT_SAME(lidar.fov_deg);
+    SIMP_EXPECT_SAME(lidar.beams);
+    SIMP_EXPECT_SAME(lidar.max_range_m);
+    SIMP_EXPECT_SAME(lidar.range_std_m);
+    SIMP_EXPECT_SAME(lidar.x_m);
+    SIMP_EXPECT_SAME(lidar.y_m);
+    SIMP_EXPECT_SAME(lidar.height_m);
+    SIMP_EXPECT_SAME(lidar.yaw_deg);
 }
 #undef SIMP_EXPECT_SAME
 

@@ -31,7 +31,7 @@ std::vector<std::string> splitListKeepingSpaces(const std::string& s) {
     return out;
 }
 
-const std::vector<std::string> kMethods{"simp", "edt", "d", "o"};
+const std::vector<std::string> kMethods{"simp", "edt", "d", "o", "lidar", "simp+lidar"};
 
 }  // namespace
 
@@ -40,6 +40,8 @@ std::string methodLabel(const std::string& method) {
     if (method == "edt") return "EDT-MCL";
     if (method == "d") return "D-MCL";
     if (method == "o") return "O-MCL";
+    if (method == "lidar") return "LiDAR-MCL";
+    if (method == "simp+lidar") return "Ours+LiDAR";
     return method;
 }
 
@@ -115,7 +117,7 @@ BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
     if (!methods.empty()) c.methods = methods;
     for (const auto& m : c.methods)
         if (std::find(kMethods.begin(), kMethods.end(), m) == kMethods.end())
-            fail("[batch] methods", "unknown method '" + m + "' (known: simp edt d o)");
+            fail("[batch] methods", "unknown method '" + m + "' (known: simp edt d o lidar simp+lidar)");
     c.repetitions = static_cast<int>(ini.readInteger(S, "repetitions", c.repetitions, 1, 1000));
     c.first_seed = static_cast<int>(ini.readInteger(S, "first_seed", c.first_seed, 0, 2147483647));
     c.cores = static_cast<int>(ini.readInteger(S, "cores", c.cores, 1, 256));

@@ -9,6 +9,7 @@
 #include <simp/eval/Plots.h>
 #include <simp/eval/Scene3D.h>
 #include <simp/localization/RawlogSequence.h>
+#include <simp/localization/ScanLikelihood.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
@@ -110,7 +111,8 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     TCLAP::ValueArg<std::string> a_rawlog("", "rawlog", "input rawlog (Q/sequence.rawlog); required", false, "", "RAWLOG", cmd);
     TCLAP::ValueArg<std::string> a_out("", "out", "output directory; required", false, "", "O", cmd);
     TCLAP::ValueArg<std::string> a_config("", "config", "MRPT-style .ini (config_ini/simp.ini)", false, "", "INI", cmd);
-    TCLAP::ValueArg<std::string> a_method("", "method", "sensor model: simp|edt|d|o (overrides the .ini)", false, "",
+    TCLAP::ValueArg<std::string> a_method("", "method", "sensor model: simp|edt|d|o|lidar|simp+lidar (overrides the .ini; lidar: the scans against the floor plan "
+                                          "alone, simp+lidar: times the object model; doc/lidar.md)", false, "",
                                           "M", cmd);
     TCLAP::ValueArg<long long> a_particles("", "particles", "particle count (overrides the .ini; default 5000)", false,
                                            0, "N", cmd);
@@ -155,7 +157,7 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     if (a_method.isSet()) {
         const std::string m = a_method.getValue();
         if (std::find(sensorModelNames().begin(), sensorModelNames().end(), m) == sensorModelNames().end())
-            throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use simp, edt, d or o)");
+            throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use simp, edt, d, o, lidar or simp+lidar)");
         options.experiment.sensor_model = m;
     }
     if (a_particles.isSet()) {
@@ -221,9 +223,23 @@ void LocalizeApp::run() {
     std::shared_ptr<maps::CObjectMap> map = m_object_map;
     m_object_map.reset();
     if (!map) map = params ? makeObjectMap(*params, config_path) : std::make_shared<maps::CObjectMap>();
-    if (!experiment.sensor_model.empty())
-        map->likelihoodOptions.sensor_model = maps::parseSensorModelType(experiment.sensor_model);
-    sensor_model_used = maps::toString(map->likelihoodOptions.sensor_model);
+    // lidar / simp+lidar (doc/lidar.md): the object model, when used, is the paper's (simp)
+    const std::string& model_name = experiment.sensor_model;
+    const bool with_scans = model_name == "lidar" || model_name == "simp+lidar";
+    if (!model_name.empty())
+        map->likelihoodOptions.sensor_model = maps::parseSensorModelType(with_scans ? "simp" : model_name);
+    sensor_model_used = with_scans ? model_name : maps::toString(map->likelihoodOptions.sensor_model);
+    if (with_scans) {
+        std::size_t scans = 0;
+        for (const auto& fr : seq.frames) scans += lastScan(*fr.observations) ? 1 : 0;
+        if (scans == 0)
+            throw std::invalid_argument("simp-localize: --method " + model_name + ": rawlog '" + rawlog_path +
+                                        "' holds no mrpt::obs::CObservation2DRangeScan (simulate one with simp-sim "
+                                        "sequence --lidar)");
+        if (options.pf.PF_algorithm != mrpt::bayes::CParticleFilter::pfStandardProposal)
+            throw std::invalid_argument("simp-localize: --method " + model_name +
+                                        " needs [PF_options] PF_algorithm = pfStandardProposal");
+    }
     map->setData(world.objects);
     if (world.objects.objects.empty()) out << "simp-localize: warning: the object map of '" << world_dir << "' is empty\n";
 
@@ -232,6 +248,8 @@ void LocalizeApp::run() {
     // second value across randomize(), so a run would depend on the draws of the one before it.
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(experiment.seed);
     Localizer localizer(map, world.floorplan, options);
+    if (with_scans)
+        localizer.setScanModel(std::make_shared<ScanLikelihood>(world.floorplan, options.lidar), model_name == "simp+lidar");
     if (initial_pose) {
         const auto& p = *initial_pose;
         try {
@@ -259,7 +277,8 @@ void LocalizeApp::run() {
     steps_file << stepsCsvHeader() << "\n";
     steps.clear();
     estimate.clear();
-    bool reporting = experiment.report_from == ReportFrom::Start;
+    // The localized/lost state is decided on object detections; without them (lidar) every frame is reported.
+    bool reporting = experiment.report_from == ReportFrom::Start || model_name == "lidar";
     const auto t_start = Clock::now();
     auto t_last_progress = t_start;
     const bool tty = isatty(fileno(stderr)) != 0;  // \r-updated line on a terminal, lines otherwise

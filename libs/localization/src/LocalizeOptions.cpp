@@ -54,7 +54,7 @@ std::string joined(const std::vector<std::string>& v) {
 }  // namespace
 
 const std::vector<std::string>& sensorModelNames() {
-    static const std::vector<std::string> names{"simp", "edt", "d", "o"};
+    static const std::vector<std::string> names{"simp", "edt", "d", "o", "lidar", "simp+lidar"};
     return names;
 }
 
@@ -299,6 +299,7 @@ void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOpt
     loadNoveltyParams(cfg, "DetectionNovelty", options.novelty);
     loadResettingParams(cfg, "SensorResetting", options.resetting);
     loadSearchParams(cfg, "HypothesisSearch", options.search);
+    options.lidar.loadFromConfig(cfg, "LidarModel");
 }
 
 }  // namespace simp::localization

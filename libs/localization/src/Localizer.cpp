@@ -205,6 +205,11 @@ void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<Wei
         m_mcl->predict(acts ? &*acts : nullptr, pf);
         injectFromDetections(observations);
         m_mcl->weigh(observations, pf.powFactor);
+        if (m_scan_model && m_pending_scan) {
+            m_mcl->weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
+            m_pending_scan.reset();
+            ++m_scans_used;
+        }
         m_mcl->normalizeWeights();
         const double ess = m_mcl->ESS();
         rec.ess = ess * static_cast<double>(m_mcl->size());
@@ -226,7 +231,10 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
                            const mrpt::obs::CSensoryFrame& frame) {
     m_pending = m_pending + odometry_increment;
     m_odometry = m_odometry + odometry_increment;
-    std::vector<WeightedObservation> observations = objectObservations(frame);
+    std::vector<WeightedObservation> observations =
+        m_use_objects ? objectObservations(frame) : std::vector<WeightedObservation>{};
+    if (m_scan_model)
+        if (auto scan = lastScan(frame)) m_pending_scan = scan;
     for (auto& o : observations) {
         o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
         m_fit.add(*m_map, o.obs, m_odometry, t_s);

@@ -63,6 +63,16 @@ std::size_t ObjectMcl::weigh(const std::vector<WeightedObservation>& observation
     return m_last_K;
 }
 
+void ObjectMcl::weighScan(const ScanLikelihood& model, const mrpt::obs::CObservation2DRangeScan& scan,
+                          double pow_factor) {
+    const std::size_t n = m_particles.size();
+    m_poses.resize(n);
+    m_log_lik.resize(n);
+    for (std::size_t i = 0; i < n; ++i) m_poses[i] = m_particles[i].d;
+    model.logLikelihoods(scan, m_poses.data(), n, m_log_lik.data());
+    for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * pow_factor;
+}
+
 void ObjectMcl::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* actions, const mrpt::obs::CSensoryFrame* sf,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {

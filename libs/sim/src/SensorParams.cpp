@@ -128,4 +128,26 @@ void PeopleParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, cons
     check(speed_min_mps > 0 && speed_max_mps >= speed_min_mps, s, "speed_min_mps/speed_max_mps", "need 0 < min <= max");
 }
 
+void LidarParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
+    enabled = readStrictBool(cfg, s, "enabled", enabled);
+    rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
+    fov_deg = cfg.read_double(s, "fov_deg", fov_deg);
+    beams = cfg.read_int(s, "beams", beams);
+    max_range_m = cfg.read_double(s, "max_range_m", max_range_m);
+    range_std_m = cfg.read_double(s, "range_std_m", range_std_m);
+    x_m = cfg.read_double(s, "x_m", x_m);
+    y_m = cfg.read_double(s, "y_m", y_m);
+    height_m = cfg.read_double(s, "height_m", height_m);
+    yaw_deg = cfg.read_double(s, "yaw_deg", yaw_deg);
+    check(rate_hz > 0 && rate_hz <= 1000, s, "rate_hz", "must be in (0, 1000]");
+    check(fov_deg > 0 && fov_deg <= 360, s, "fov_deg", "must be in (0, 360]");
+    check(beams >= 2 && beams <= 100000, s, "beams", "must be in [2, 100000]");
+    check(max_range_m > 0 && max_range_m <= 1000, s, "max_range_m", "must be in (0, 1000]");
+    check(range_std_m >= 0 && range_std_m <= 10, s, "range_std_m", "must be in [0, 10]");
+    check(std::isfinite(x_m) && std::isfinite(y_m) && std::abs(x_m) < 10 && std::abs(y_m) < 10, s, "x_m/y_m",
+          "must be finite and within 10 m of the robot centre");
+    check(height_m > 0 && height_m < 10, s, "height_m", "must be in (0, 10)");
+    check(std::isfinite(yaw_deg), s, "yaw_deg", "must be finite");
+}
+
 }  // namespace simp::sim

@@ -8,6 +8,7 @@
 #include <simp/io/MrptGroundTruth.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/sim/DetectionModel.h>
+#include <simp/sim/LidarSimulator.h>
 #include <simp/sim/People.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/Visibility.h>
@@ -85,6 +86,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     const std::uint64_t noise_seed = master.split();  // persistent detection errors (doc/simulator.md)
     // split after all others: a sequence without a kidnap draws exactly what it drew before
     Rng rng_kidnap(master.split());
+    Rng rng_lidar(master.split());  // after the kidnap's: a sequence without scans is as before
     params.validateKidnap();
     SequenceSummary summary;
 
@@ -137,6 +139,12 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     if (!file.open(rawlog_path)) throw std::runtime_error("cannot write '" + rawlog_path + "'");
     auto arch = mrpt::serialization::archiveFrom(file);
 
+    // the 2D LiDAR ([lidar]; doc/lidar.md): at most one scan per odometry step
+    std::optional<LidarSimulator> lidar;
+    if (params.lidar.enabled) lidar.emplace(w, params.lidar);
+    const auto lidar_every = static_cast<std::size_t>(
+        std::max(1L, std::lround(params.odometry.rate_hz / params.lidar.rate_hz)));
+
     std::vector<world::MapObject> scene = w.objects.objects;
     const std::size_t n_static = scene.size();
     int last_pct = -1;
@@ -181,6 +189,12 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
                 sf.insert(ob);
                 ++summary.camera_frames;
             }
+        }
+        if (lidar && k % lidar_every == 0) {
+            std::vector<world::MapObject> walkers;
+            for (std::size_t i = 0; i < people.size(); ++i) walkers.push_back(personBox(people[i][k], person_size[i], person_class));
+            sf.insert(std::make_shared<mrpt::obs::CObservation2DRangeScan>(lidar->scan(traj[k].pose, walkers, t, rng_lidar)));
+            ++summary.scans;
         }
         arch << acts << sf;
         ++summary.steps;

@@ -27,7 +27,7 @@ std::string SimApp::usage() {
            "  simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]\n"
            "      writes the world directory W (floorplan.yaml/.png, rooms.png, objects.json)\n"
            "  simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]\n"
-           "                    [--kidnap-at SEC]\n"
+           "                    [--kidnap-at SEC] [--lidar]\n"
            "      writes Q/sequence.rawlog, Q/groundtruth.tum, Q/groundtruth_mrpt.txt (for pf-localization),\n"
            "      Q/world/, Q/changes.json and Q/overview.png\n"
            "      (+ Q/kidnap.json with --kidnap-at; --world-in W is a synonym of --world)\n"
@@ -42,6 +42,8 @@ std::string SimApp::usage() {
            "  --kidnap-at SEC  at SEC s after the start (0 <= SEC <= duration) teleport the robot once to a random\n"
            "                 free pose >= [sequence] kidnap_min_distance_m (3 m) away; odometry does not show it,\n"
            "                 Q/groundtruth.tum does; Q/kidnap.json records it. Overrides [sequence] kidnap_at_s\n"
+           "  --lidar        also write 2D laser scans (CObservation2DRangeScan, sensorLabel LIDAR) into the\n"
+           "                 sensory frames; same as [lidar] enabled = true (doc/lidar.md)\n"
            "  --size-m2 A    target floor area (m^2) of the built-in office; --rooms N: number of rooms\n";
 }
 
@@ -59,6 +61,10 @@ bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out)
         const std::string& opt = args[i];
         if (command == "sequence" && opt == "--coverage") {
             coverage = true;
+            continue;
+        }
+        if (command == "sequence" && opt == "--lidar") {
+            lidar = true;
             continue;
         }
         if (i + 1 >= args.size()) throw std::invalid_argument("option " + opt + " needs a value");
@@ -126,6 +132,7 @@ void SimApp::run(std::ostream& out) {
     if (duration_s) p.duration_s = *duration_s;
     if (changes) p.changes.fraction = *changes;
     if (coverage) p.trajectory.coverage = true;
+    if (lidar) p.lidar.enabled = true;
     if (kidnap_at_s) p.kidnap_at_s = *kidnap_at_s;
     p.validateKidnap(kidnap_at_s ? "option --kidnap-at" : "[sequence] kidnap_at_s");  // against the final duration
     if (!mrpt::system::directoryExists(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
@@ -135,7 +142,7 @@ void SimApp::run(std::ostream& out) {
         << s.true_detections << " object detections, " << s.person_detections << " person detections, "
         << s.phantom_detections << " phantoms, path " << s.path_length_m << " m; changes: " << s.changes.removed
         << " removed, " << s.changes.moved << " moved, " << s.changes.added << " added, " << s.changes.doors_closed
-        << " doors closed\n";
+        << " doors closed" << (p.lidar.enabled ? "; " + std::to_string(s.scans) + " laser scans" : std::string()) << "\n";
     if (s.kidnap) {
         const auto& k = *s.kidnap;
         out << "simp-sim: kidnapped at t = " << k.t_from_start_s << " s (step " << k.step << ") from (" << k.from.x

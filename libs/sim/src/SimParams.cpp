@@ -51,6 +51,7 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
     detector.loadFromConfig(cfg, "detector");
     false_positives.loadFromConfig(cfg, "false_positives");
     people.loadFromConfig(cfg, "people");
+    lidar.loadFromConfig(cfg, "lidar");
     changes.loadFromConfig(cfg, "changes");
 }
 

@@ -33,7 +33,7 @@ enum class ReportFrom {
 struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
     std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
-    std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else simp|edt|d|o
+    std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else simp|edt|d|o|lidar|simp+lidar (doc/lidar.md)
     double free_cells_threshold = 0.7;    ///< a floor-plan cell is free when p_free >= this (MRPT's default)
     bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy

@@ -47,6 +47,7 @@ struct LocalizerOptions {
     DetectionNoveltyParams novelty;
     SensorResettingParams resetting;
     HypothesisSearchParams search;
+    LidarModelOptions lidar;  ///< [LidarModel]: used by sensor_model lidar / simp+lidar only
 
     /// pfStandardProposal, prSystematic, no adaptive size, BETA 0.5 (MRPT's section defaults).
     static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
@@ -72,6 +73,16 @@ class Localizer {
     /// frame) and the frame's observations (may be empty). Runs a filter update when the motion
     /// trigger fires; returns the state after the frame (`seconds` left 0: the caller times it).
     StepRecord step(double t_s, const mrpt::poses::CPose2D& odometry_increment, const mrpt::obs::CSensoryFrame& frame);
+
+    /// The LiDAR (doc/lidar.md): each update also weighs the latest scan since the previous update with
+    /// `model` (nullptr: none, the default). use_objects = false drops the object detections entirely
+    /// (`--method lidar`: no object weights, sensor resetting or hypothesis search from detections).
+    void setScanModel(std::shared_ptr<const ScanLikelihood> model, bool use_objects) {
+        m_scan_model = std::move(model);
+        m_use_objects = use_objects;
+    }
+    /// Scans weighed so far.
+    std::size_t scansUsed() const { return m_scans_used; }
 
     const ObjectMcl& filter() const { return *m_mcl; }
     LocalizationState state() const { return m_monitor.state(); }
@@ -106,6 +117,10 @@ class Localizer {
     /// summarizing 5000 particles at every 10 Hz frame was a quarter of a run's time.
     std::optional<ParticleSummary> m_summary;
     bool m_first = true;
+    std::shared_ptr<const ScanLikelihood> m_scan_model;
+    bool m_use_objects = true;
+    mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
+    std::size_t m_scans_used = 0;
 };
 
 /// Particles needed for a KLD bound (Fox, IJRR 2003) on the set's occupied bins of kld's bin

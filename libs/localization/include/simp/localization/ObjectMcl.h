@@ -7,6 +7,7 @@
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/FreeSpace.h>
+#include <simp/localization/ScanLikelihood.h>
 #include <simp/maps/CObjectMap.h>
 
 #include <memory>
@@ -67,6 +68,9 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// Adds pow_factor x Eq. singw of the update's observations to every particle's log-weight.
     /// \return K, the detections used (0: weights unchanged).
     std::size_t weigh(const std::vector<WeightedObservation>& observations, double pow_factor);
+    /// Adds pow_factor x the scan model's log-likelihood of `scan` (LidarModelOptions::weight applied)
+    /// to every particle's log-weight (`simp-localize --method lidar|simp+lidar`).
+    void weighScan(const ScanLikelihood& model, const mrpt::obs::CObservation2DRangeScan& scan, double pow_factor);
     /// Replaces min(poses.size(), N) particles, spread evenly over the set, by `poses`, each with the
     /// mean weight of the set (sensor resetting). \return how many were replaced.
     std::size_t inject(const std::vector<mrpt::math::TPose2D>& poses);

@@ -91,4 +91,22 @@ struct PeopleParams {
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
+/// [lidar]: a planar 2D laser scanner (defaults: a Hokuyo UTM-30LX) writing
+/// mrpt::obs::CObservation2DRangeScan observations (doc/lidar.md).
+struct LidarParams {
+    bool enabled = false;         ///< write scans (simp-sim sequence --lidar sets it)
+    /// Scans per second (Hz). The rawlog holds one sensory frame per odometry step, so at most one scan
+    /// per step is written: the effective rate is min(rate_hz, [odometry] rate_hz).
+    double rate_hz = 40;
+    double fov_deg = 270;         ///< aperture, centred on the sensor's x axis (deg)
+    int beams = 1081;             ///< rays over the aperture (first and last at +-fov/2)
+    double max_range_m = 30;      ///< beyond it a ray is not valid (m)
+    double range_std_m = 0.02;    ///< Gaussian range noise (m)
+    double x_m = 0.0, y_m = 0.0;  ///< sensor position on the robot (m, robot frame)
+    double height_m = 0.3;        ///< scan plane above the floor (m): objects spanning it are seen
+    double yaw_deg = 0.0;         ///< sensor heading on the robot (deg)
+
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+};
+
 }  // namespace simp::sim

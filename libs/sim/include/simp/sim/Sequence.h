@@ -21,6 +21,7 @@ struct SequenceSummary {
     std::size_t true_detections = 0;  ///< detections of real map objects (right or wrong label)
     std::size_t person_detections = 0;
     std::size_t phantom_detections = 0;
+    std::size_t scans = 0;             ///< CObservation2DRangeScan written ([lidar] enabled)
     ChangeSummary changes;
     double path_length_m = 0;          ///< driven path (m; the teleport of a kidnap not included)
     std::optional<KidnapEvent> kidnap; ///< the teleport, when params.kidnap_at_s >= 0

@@ -2,7 +2,7 @@
 /// \file SimApp.h
 /// The logic of the `simp-sim` program (apps/simp-sim is a try/catch around it):
 ///   simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]
-///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]
+///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage] [--lidar]
 ///                     [--kidnap-at SEC]
 
 #include <cstdint>
@@ -31,6 +31,7 @@ class SimApp {
     std::optional<double> size_m2, duration_s, changes;
     std::optional<double> kidnap_at_s;  ///< --kidnap-at: teleport time after the start (s)
     bool coverage = false;  ///< --coverage
+    bool lidar = false;     ///< --lidar: [lidar] enabled = true
     std::optional<int> rooms;
 };
 

@@ -42,10 +42,11 @@ struct SimParams {
     DetectorParams detector;
     FalsePositiveParams false_positives;
     PeopleParams people;
+    LidarParams lidar;
     ChangeParams changes;
 
     /// Reads sections sequence, trajectory, odometry, cameras, visibility, detector,
-    /// false_positives, people, changes; missing keys keep defaults; bad values throw naming
+    /// false_positives, people, changes, lidar; missing keys keep defaults; bad values throw naming
     /// section and key. kidnap_at_s <= duration_s is checked by validateKidnap(), once
     /// command-line options have overridden the duration.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);

@@ -1,0 +1,45 @@
+#pragma once
+/// \file IcpPoseTracker.h
+/// Scan-matched poses (the paper's "ICP" map poses): from a known start, each step predicts the pose
+/// with the odometry increment and aligns the step's scan to the floor plan's wall surfaces with
+/// MRPT's ICP (mrpt::slam::CICP, scan-to-map), the prediction as the initial guess. An alignment
+/// with few paired points or a large jump from the prediction is rejected (odometry only).
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/slam/CICP.h>
+#include <simp/lidar/IcpOptions.h>
+
+#include <cstddef>
+
+namespace simp::lidar {
+
+class IcpPoseTracker {
+   public:
+    IcpPoseTracker(const mrpt::maps::COccupancyGridMap2D& floorplan, const IcpPosesOptions& options);
+
+    /// Starts at `pose` (m, rad; world frame of the floor plan).
+    void reset(const mrpt::math::TPose2D& pose) { m_pose = mrpt::poses::CPose2D(pose); }
+
+    /// One step: `odometry_increment` (robot frame of the previous step), then `scan` (nullptr: none).
+    /// \return the pose after the step.
+    mrpt::math::TPose2D step(const mrpt::poses::CPose2D& odometry_increment,
+                             const mrpt::obs::CObservation2DRangeScan* scan);
+
+    mrpt::math::TPose2D pose() const { return m_pose.asTPose(); }
+    std::size_t accepted() const { return m_accepted; }  ///< scans whose alignment was used
+    std::size_t rejected() const { return m_rejected; }  ///< scans left to odometry
+    std::size_t wallPoints() const { return m_walls.size(); }
+
+   private:
+    IcpPosesOptions m_opts;
+    mrpt::maps::CSimplePointsMap m_walls;
+    mrpt::slam::CICP m_icp;
+    mrpt::poses::CPose2D m_pose;
+    std::size_t m_accepted = 0, m_rejected = 0;
+};
+
+}  // namespace simp::lidar

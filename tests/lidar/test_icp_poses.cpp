@@ -1,0 +1,131 @@
+// Scan-matched poses: MRPT's ICP against the floor plan recovers a known offset; simp-icp-poses end
+// to end on a short simulated LiDAR sequence, and its errors.
+#include <gtest/gtest.h>
+#include <simp/lidar/IcpPoseTracker.h>
+#include <simp/lidar/IcpPosesApp.h>
+#include <simp/lidar/ScanPoints.h>
+#include <simp/obs/ObjectClasses.h>
+#include <simp/sim/LidarSimulator.h>
+#include <simp/sim/Office.h>
+#include <simp/sim/OfficeLayout.h>
+#include <simp/sim/Sequence.h>
+
+#include "common/ErrorOf.h"
+
+#include <filesystem>
+#include <sstream>
+
+namespace {
+
+/// An L-shaped room (10 m x 6 m with a 4 m x 2 m corner cut out): every pose is constrained.
+simp::world::World lRoom() {
+    simp::world::World w;
+    auto& g = w.floorplan;
+    g.setSize(-0.5, 10.5, -0.5, 6.5, 0.05, 0.5f);
+    simp::sim::fillRect(g, {0.0, 0.0, 10.0, 6.0}, false);
+    simp::sim::fillRect(g, {6.0, 4.0, 10.15, 6.15}, true);
+    simp::sim::fillRect(g, {-0.15, -0.15, 10.15, 0.0}, true);
+    simp::sim::fillRect(g, {-0.15, 6.0, 10.15, 6.15}, true);
+    simp::sim::fillRect(g, {-0.15, -0.15, 0.0, 6.15}, true);
+    simp::sim::fillRect(g, {10.0, -0.15, 10.15, 6.15}, true);
+    w.objects.class_names = simp::obs::defaultClassNames();
+    return w;
+}
+
+std::string outDir(const std::string& name) {
+    const auto d = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "lidar" / name;
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d.string();
+}
+
+}  // namespace
+
+TEST(LidarScanPoints, ScanPointsLieOnTheWalls) {
+    const auto w = lRoom();
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.0;
+    simp::sim::LidarSimulator lidar(w, p);
+    simp::sim::Rng rng(1);
+    const auto scan = lidar.scan({3.0, 2.0, 0.0}, {}, 0.0, rng);
+    const auto pts = simp::lidar::scanToPoints(scan, 1, 30.0);
+    ASSERT_GT(pts.size(), 1000u);
+    // the ray straight ahead hits the wall at x = 10 m, 7 m ahead of the robot
+    float x = 0, y = 0, z = 0;
+    pts.getPoint(pts.size() / 2, x, y, z);
+    EXPECT_NEAR(x, 7.0, 0.06);
+    EXPECT_NEAR(y, 0.0, 0.06);
+    EXPECT_GT(simp::lidar::wallSurfacePoints(w.floorplan).size(), 500u);
+}
+
+TEST(LidarIcp, RecoversAKnownOffset) {
+    const auto w = lRoom();
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.02;
+    simp::sim::LidarSimulator lidar(w, p);
+    simp::sim::Rng rng(5);
+    const mrpt::math::TPose2D truth{3.0, 2.0, 0.3};
+    const auto scan = lidar.scan(truth, {}, 0.0, rng);
+    simp::lidar::IcpPosesOptions o;
+    simp::lidar::IcpPoseTracker tracker(w.floorplan, o);
+    tracker.reset({3.06, 1.95, 0.33});  // 0.08 m and 0.03 rad off
+    const auto est = tracker.step(mrpt::poses::CPose2D(), &scan);
+    EXPECT_EQ(tracker.accepted(), 1u);
+    EXPECT_NEAR(est.x, truth.x, 0.03);
+    EXPECT_NEAR(est.y, truth.y, 0.03);
+    EXPECT_NEAR(est.phi, truth.phi, 0.01);
+    // a correction larger than max_correction_m is rejected: the prediction is kept
+    o.max_correction_m = 0.02;
+    simp::lidar::IcpPoseTracker strict(w.floorplan, o);
+    strict.reset({3.06, 1.95, 0.33});
+    const auto kept = strict.step(mrpt::poses::CPose2D(), &scan);
+    EXPECT_EQ(strict.rejected(), 1u);
+    EXPECT_DOUBLE_EQ(kept.x, 3.06);
+}
+
+TEST(LidarIcpPosesApp, EndToEndOnASimulatedSequence) {
+    simp::sim::OfficeParams op;
+    op.rooms = 4;
+    const auto world = simp::sim::generateOffice(op, 11);
+    const std::string dir = outDir("app");
+    simp::world::saveWorld(world, dir + "/W");
+    simp::sim::SimParams sp;
+    sp.duration_s = 30;
+    sp.progress = false;
+    sp.lidar.enabled = true;
+    simp::sim::simulateSequence(world, sp, 12, dir + "/Q");
+    const auto gt = simp::io::readTum(dir + "/Q/groundtruth.tum");
+    const auto& s0 = gt.front().pose;
+    std::ostringstream start;
+    start << s0.x << "," << s0.y << "," << s0.phi;
+    simp::lidar::IcpPosesApp app;
+    std::ostringstream out;
+    ASSERT_TRUE(app.initialize({"--world", dir + "/W", "--rawlog", dir + "/Q/sequence.rawlog", "--initial-pose",
+                                start.str(), "--out", dir + "/P.tum", "--gt", dir + "/Q/groundtruth.tum"},
+                               out));
+    app.run(out);
+    EXPECT_EQ(app.poses.size(), gt.size() - 1);
+    EXPECT_EQ(app.scans, app.poses.size());
+    ASSERT_TRUE(app.metrics && app.metrics->ate_trans_m);
+    EXPECT_LT(*app.metrics->ate_trans_m, 0.05) << out.str();
+    EXPECT_NE(out.str().find("ATE"), std::string::npos);
+}
+
+TEST(LidarIcpPosesApp, BadInputIsNamed) {
+    std::ostringstream out;
+    using simp_test::errorOf;
+    const auto init = [&](const std::vector<std::string>& args) {
+        simp::lidar::IcpPosesApp app;
+        return errorOf([&] { app.initialize(args, out); });
+    };
+    EXPECT_NE(init({"--world", "W", "--rawlog", "R", "--out", "P", "--initial-pose", "1,2"})
+                  .find("expected 3 numbers"),
+              std::string::npos);
+    EXPECT_NE(init({"--world", "W", "--rawlog", "R", "--out", "P", "--initial-pose", "1,x,2"})
+                  .find("'x' is not a finite number"),
+              std::string::npos);
+    EXPECT_NE(init({"--world", "W", "--rawlog", "R", "--out", "P"}).find("--initial-pose"),
+              std::string::npos);
+    EXPECT_NE(init({"--world", "W", "--initial-pose", "1,2,3", "--out", "P"}).find("--rawlog"),
+              std::string::npos);
+}
