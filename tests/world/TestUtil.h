@@ -2,9 +2,10 @@
 // Shared helpers of tests/world: a fresh output folder per test, file writing, throw capture.
 #include <gtest/gtest.h>
 
+#include "common/ErrorOf.h"
+
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <string>
 
 namespace simp_test {
@@ -23,14 +24,5 @@ inline void writeFile(const std::string& path, const std::string& text) {
     std::ofstream(path) << text;
 }
 
-/// Message of the std::exception thrown by f, or "" when nothing is thrown.
-inline std::string thrownMessage(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
 
 }  // namespace simp_test

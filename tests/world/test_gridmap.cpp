@@ -84,9 +84,9 @@ TEST(Gridmap, MrptReadsAnOriginOffTheCellLatticeRounded) {
 
 TEST(Gridmap, ErrorsNameTheFile) {
     const std::string dir = simp_test::freshDir();
-    EXPECT_NE(simp_test::thrownMessage([&] { simp::world::loadGridmap(dir + "/none.gridmap"); }).find("none.gridmap"),
+    EXPECT_NE(simp_test::errorOf([&] { simp::world::loadGridmap(dir + "/none.gridmap"); }).find("none.gridmap"),
               std::string::npos);
     simp_test::writeFile(dir + "/text.gridmap", "not a grid map");
-    const std::string msg = simp_test::thrownMessage([&] { simp::world::loadGridmap(dir + "/text.gridmap"); });
+    const std::string msg = simp_test::errorOf([&] { simp::world::loadGridmap(dir + "/text.gridmap"); });
     EXPECT_NE(msg.find("text.gridmap"), std::string::npos) << msg;
 }

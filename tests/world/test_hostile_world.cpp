@@ -13,7 +13,7 @@
 
 using ::testing::HasSubstr;
 using simp_test::freshDir;
-using simp_test::thrownMessage;
+using simp_test::errorOf;
 using simp_test::writeFile;
 
 namespace {
@@ -25,7 +25,7 @@ std::string objectsJson(const std::string& object) {
 std::string loadError(const std::string& text) {
     const std::string path = freshDir() + "/objects.json";
     writeFile(path, text);
-    return thrownMessage([&] { simp::world::loadObjectMap(path); });
+    return errorOf([&] { simp::world::loadObjectMap(path); });
 }
 
 const std::string kTable = R"("id": 1, "class": "table", "yaw_rad": 0)";
@@ -58,7 +58,7 @@ TEST(HostileWorld, FloorPlanResolutionOutOfRange) {
     for (const std::string res : {"1e-9", "1e9"}) {
         writeFile(dir + "/map.yaml", "image: map.png\nresolution: " + res +
                                          "\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
-        const auto msg = thrownMessage([&] { simp::world::readRosMapYaml(dir + "/map.yaml"); });
+        const auto msg = errorOf([&] { simp::world::readRosMapYaml(dir + "/map.yaml"); });
         EXPECT_THAT(msg, HasSubstr("map.yaml: resolution"));
         EXPECT_THAT(msg, HasSubstr("outside"));
     }
@@ -75,7 +75,7 @@ TEST(HostileWorld, HugeDeclaredImageFailsBeforeDecoding) {
     writeFile(dir + "/map.yaml",
               "image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\noccupied_thresh: 0.65\nfree_thresh: 0.196\n");
     mrpt::maps::COccupancyGridMap2D grid;
-    const auto msg = thrownMessage([&] { simp::world::loadRosMap(dir + "/map.yaml", grid); });
+    const auto msg = errorOf([&] { simp::world::loadRosMap(dir + "/map.yaml", grid); });
     EXPECT_THAT(msg, HasSubstr("map.png: image of 2000000000 x 2000000000 px exceeds the maximum"));
     // A PGM header declares its size in text.
     writeFile(dir + "/big.pgm", "P5\n# comment\n100000 100000\n255\n");

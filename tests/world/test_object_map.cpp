@@ -9,7 +9,7 @@
 
 using namespace simp::world;
 using simp_test::freshDir;
-using simp_test::thrownMessage;
+using simp_test::errorOf;
 using simp_test::writeFile;
 using ::testing::HasSubstr;
 
@@ -59,7 +59,7 @@ std::string fileWithObject3(const std::string& object3) {
 std::string loadError(const std::string& text) {
     const std::string path = freshDir() + "/objects.json";
     writeFile(path, text);
-    return thrownMessage([&] { loadObjectMap(path); });
+    return errorOf([&] { loadObjectMap(path); });
 }
 
 }  // namespace
@@ -116,7 +116,7 @@ TEST(ObjectMapJson, YawRadGivesAnUprightBoxAndOptionalCountersDefault) {
 }
 
 TEST(ObjectMapJson, MissingFile) {
-    EXPECT_THAT(thrownMessage([] { loadObjectMap("/nonexistent/objects.json"); }),
+    EXPECT_THAT(errorOf([] { loadObjectMap("/nonexistent/objects.json"); }),
                 HasSubstr("/nonexistent/objects.json: file not found"));
 }
 
@@ -229,7 +229,7 @@ TEST(ObjectMapJson, SaveRejectsInvalidContent) {
     ObjectMapData d = makeMap();
     d.objects[2].box.size.y() = std::nan("");
     const std::string path = freshDir() + "/objects.json";
-    EXPECT_THAT(thrownMessage([&] { saveObjectMap(d, path); }), HasSubstr("objects.json: objects[2].size_m"));
+    EXPECT_THAT(errorOf([&] { saveObjectMap(d, path); }), HasSubstr("objects.json: objects[2].size_m"));
 }
 
 TEST(ObjectMapData, ClassIdAndNoiseOf) {
@@ -272,5 +272,5 @@ TEST(DefaultClassHeight, AllPaperClassesRealisticAndUnknownThrows) {
     EXPECT_DOUBLE_EQ(defaultClassHeight("door"), 2.0);
     EXPECT_DOUBLE_EQ(defaultClassHeight("table"), 0.75);
     EXPECT_DOUBLE_EQ(defaultClassHeight("person"), 1.7);
-    EXPECT_THAT(thrownMessage([] { defaultClassHeight("piano"); }), HasSubstr("'piano'"));
+    EXPECT_THAT(errorOf([] { defaultClassHeight("piano"); }), HasSubstr("'piano'"));
 }

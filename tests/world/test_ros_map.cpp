@@ -8,7 +8,7 @@
 
 using namespace simp::world;
 using simp_test::freshDir;
-using simp_test::thrownMessage;
+using simp_test::errorOf;
 using simp_test::writeFile;
 using ::testing::HasSubstr;
 
@@ -126,7 +126,7 @@ TEST(RosMap, BlockStyleOriginAndAbsoluteImagePath) {
 
 TEST(RosMap, MissingYaml) {
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap("/nonexistent/map.yaml", g); }),
+    EXPECT_THAT(errorOf([&] { loadRosMap("/nonexistent/map.yaml", g); }),
                 HasSubstr("/nonexistent/map.yaml: file not found"));
 }
 
@@ -134,21 +134,21 @@ TEST(RosMap, MissingImageKey) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("resolution: 0.05\norigin: [0, 0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: image: missing"));
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: image: missing"));
 }
 
 TEST(RosMap, MissingResolution) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("image: map.png\norigin: [0, 0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: resolution: missing"));
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: resolution: missing"));
 }
 
 TEST(RosMap, MissingThreshold) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", "image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\nfree_thresh: 0.196\n");
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }),
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }),
                 HasSubstr("map.yaml: occupied_thresh: missing"));
 }
 
@@ -156,14 +156,14 @@ TEST(RosMap, BadOrigin) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("image: map.png\nresolution: 0.05\norigin: [0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: origin: expected"));
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.yaml: origin: expected"));
 }
 
 TEST(RosMap, RotatedOriginRejected) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("image: map.png\nresolution: 0.05\norigin: [0, 0, 0.3]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }),
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }),
                 HasSubstr("map.yaml: origin: a non-zero yaw is not supported"));
 }
 
@@ -171,7 +171,7 @@ TEST(RosMap, NonPositiveResolution) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("image: map.png\nresolution: 0\norigin: [0, 0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }),
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }),
                 HasSubstr("map.yaml: resolution: expected a positive number"));
 }
 
@@ -179,7 +179,7 @@ TEST(RosMap, MissingImageFile) {
     const std::string dir = freshDir();
     writeFile(dir + "/map.yaml", std::string("image: nothere.png\nresolution: 0.05\norigin: [0, 0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }),
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }),
                 HasSubstr("map.yaml: image: file '" + dir + "/nothere.png' not found"));
 }
 
@@ -188,5 +188,5 @@ TEST(RosMap, UnreadableImage) {
     writeFile(dir + "/map.png", "not a png");
     writeFile(dir + "/map.yaml", std::string("image: map.png\nresolution: 0.05\norigin: [0, 0, 0]\n") + kThresholds);
     mrpt::maps::COccupancyGridMap2D g;
-    EXPECT_THAT(thrownMessage([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.png: cannot read the image"));
+    EXPECT_THAT(errorOf([&] { loadRosMap(dir + "/map.yaml", g); }), HasSubstr("map.png: cannot read the image"));
 }

@@ -16,7 +16,7 @@
 
 using namespace simp::world;
 using simp_test::freshDir;
-using simp_test::thrownMessage;
+using simp_test::errorOf;
 using simp_test::writeFile;
 using ::testing::HasSubstr;
 
@@ -122,7 +122,7 @@ TEST(FitRectangle, ExactRectangleAndRoundedCorners) {
     EXPECT_NEAR(f.length_x_m, 2, 1e-12);
     EXPECT_NEAR(f.length_y_m, 1, 1e-12);
     // Degenerate: all corners on a line.
-    EXPECT_THAT(thrownMessage([] {
+    EXPECT_THAT(errorOf([] {
                     fitRectangle({Eigen::Vector2d(0, 0), Eigen::Vector2d(1, 0), Eigen::Vector2d(2, 0), Eigen::Vector2d(3, 0)});
                 }),
                 HasSubstr("degenerate"));
@@ -231,30 +231,30 @@ TEST(SimpImport, HeightsFromIni) {
     EXPECT_NEAR(w.objects.objects[0].box.size.z(), 0.72, 1e-12);
     EXPECT_NEAR(w.objects.objects[0].box.center.z(), 0.36, 1e-12);
     writeFile(dir + "/bad.ini", "[class_heights]\ntable = -1\n");
-    EXPECT_THAT(thrownMessage([&] { loadSimpImportOptions(dir + "/bad.ini"); }),
+    EXPECT_THAT(errorOf([&] { loadSimpImportOptions(dir + "/bad.ini"); }),
                 HasSubstr("bad.ini: [class_heights] table"));
 }
 
 TEST(SimpImport, MissingDirectory) {
-    EXPECT_THAT(thrownMessage([] { importSimpMap("/nonexistent/simp"); }), HasSubstr("'/nonexistent/simp' does not exist"));
+    EXPECT_THAT(errorOf([] { importSimpMap("/nonexistent/simp"); }), HasSubstr("'/nonexistent/simp' does not exist"));
 }
 
 TEST(SimpImport, MissingGlobalVariance) {
     const std::string dir = exampleCopy();
     std::filesystem::remove(dir + "/global_variance.json");
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("global_variance.json: file not found"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("global_variance.json: file not found"));
 }
 
 TEST(SimpImport, MissingMapYaml) {
     const std::string dir = exampleCopy();
     std::filesystem::remove(dir + "/Map.yaml");
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("Map.yaml: missing"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("Map.yaml: missing"));
 }
 
 TEST(SimpImport, MissingClassesKey) {
     const std::string dir = exampleCopy();
     writeFile(dir + "/floor.config", R"({"semantic": {"categories": ["office"]}})");
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("floor.config: semantic.classes: missing"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("floor.config: semantic.classes: missing"));
 }
 
 TEST(SimpImport, ArraysOfDifferentLength) {
@@ -262,7 +262,7 @@ TEST(SimpImport, ArraysOfDifferentLength) {
     auto gv = readJson(dir + "/global_variance.json");
     gv["sx"].erase(gv["sx"].begin());
     writeFile(dir + "/global_variance.json", gv.dump());
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("global_variance.json: sx: expected 3 numbers"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("global_variance.json: sx: expected 3 numbers"));
 }
 
 TEST(SimpImport, BadCorners) {
@@ -270,7 +270,7 @@ TEST(SimpImport, BadCorners) {
     auto gv = readJson(dir + "/global_variance.json");
     gv["corners"][1] = {1, 2, 3};
     writeFile(dir + "/global_variance.json", gv.dump());
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }),
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }),
                 HasSubstr("global_variance.json: corners[1]: expected 8 numbers"));
 }
 
@@ -279,7 +279,7 @@ TEST(SimpImport, CategoryOutOfRange) {
     auto gv = readJson(dir + "/global_variance.json");
     gv["category"][2] = 14;
     writeFile(dir + "/global_variance.json", gv.dump());
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }),
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }),
                 HasSubstr("global_variance.json: category[2]: expected a class index in [0, 14)"));
 }
 
@@ -306,7 +306,7 @@ TEST(SimpImport, ClassMeanIsTheMeanOfItsObjectsOffsetsInTheClassFrame) {
 TEST(SimpImport, ClassNoiseRowHalfFilled) {
     const std::string dir = exampleCopy();
     writeFile(dir + "/class_noise.csv", "category,mx,my,sx,sy,b\n0,1,2,,,\n");
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("class_noise.csv: line 2: either all of"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("class_noise.csv: line 2: either all of"));
 }
 
 TEST(SimpImport, UnknownClassWithoutHeight) {
@@ -314,14 +314,14 @@ TEST(SimpImport, UnknownClassWithoutHeight) {
     auto fc = readJson(dir + "/floor.config");
     fc["semantic"]["classes"][4] = "piano";
     writeFile(dir + "/floor.config", fc.dump());
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }),
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }),
                 HasSubstr("floor.config: semantic.classes[4]: no height for class 'piano'"));
 }
 
 TEST(SimpImport, MissingNamedRoomRaster) {
     const std::string dir = exampleCopy();
     std::filesystem::remove(dir + "/roomseg.pgm");
-    EXPECT_THAT(thrownMessage([&] { importSimpMap(dir); }), HasSubstr("floor.config: roomSeg: file"));
+    EXPECT_THAT(errorOf([&] { importSimpMap(dir); }), HasSubstr("floor.config: roomSeg: file"));
 }
 
 TEST(SimpExport, WithoutRoomsOrNoiseModels) {
@@ -360,7 +360,7 @@ TEST(SimpExport, RoomIdsAbove255AreRejected) {
     const std::string dir = freshDir();
     World w = importSimpMap(kExample);
     w.rooms.ids(5, 5) = 300;
-    EXPECT_THAT(thrownMessage([&] { exportSimpMap(w, dir + "/d"); }), HasSubstr("roomseg.png: room id 300 does not fit 8 bits"));
+    EXPECT_THAT(errorOf([&] { exportSimpMap(w, dir + "/d"); }), HasSubstr("roomseg.png: room id 300 does not fit 8 bits"));
 }
 
 TEST(MapConvertApps, ImportThenExportInProcess) {
@@ -383,7 +383,7 @@ TEST(MapConvertApps, ImportThenExportInProcess) {
         EXPECT_TRUE(std::filesystem::exists(d + "/" + f)) << f;
     const char* bad[] = {"simp-import-map", "--simp-dir", "x"};
     ImportMapApp app2;
-    EXPECT_THAT(thrownMessage([&] { app2.initialize(3, bad); }), HasSubstr("missing --out W"));
+    EXPECT_THAT(errorOf([&] { app2.initialize(3, bad); }), HasSubstr("missing --out W"));
 }
 
 // ---- The authors' real map (skipped when ../shared/data/simp-office is absent). ----

@@ -8,7 +8,7 @@
 
 using namespace simp::world;
 using simp_test::freshDir;
-using simp_test::thrownMessage;
+using simp_test::errorOf;
 using ::testing::HasSubstr;
 
 namespace {
@@ -77,9 +77,9 @@ TEST(RoomMap, SixteenBitRoundTripAndEightBitInput) {
 
 TEST(RoomMap, BadFiles) {
     const std::string dir = freshDir();
-    EXPECT_THAT(thrownMessage([&] { loadRoomMap(dir + "/none.png", 0.5, 0, 0); }), HasSubstr("none.png: file not found"));
+    EXPECT_THAT(errorOf([&] { loadRoomMap(dir + "/none.png", 0.5, 0, 0); }), HasSubstr("none.png: file not found"));
     cv::imwrite(dir + "/colour.png", cv::Mat3b(2, 2, cv::Vec3b(1, 2, 3)));
-    EXPECT_THAT(thrownMessage([&] { loadRoomMap(dir + "/colour.png", 0.5, 0, 0); }),
+    EXPECT_THAT(errorOf([&] { loadRoomMap(dir + "/colour.png", 0.5, 0, 0); }),
                 HasSubstr("colour.png: expected a single-channel"));
 }
 
@@ -112,7 +112,7 @@ TEST(World, RoomsAreOptional) {
 }
 
 TEST(World, MissingDirectory) {
-    EXPECT_THAT(thrownMessage([] { loadWorld("/nonexistent/world"); }),
+    EXPECT_THAT(errorOf([] { loadWorld("/nonexistent/world"); }),
                 HasSubstr("world directory '/nonexistent/world' does not exist"));
 }
 
@@ -120,21 +120,21 @@ TEST(World, MissingFloorPlan) {
     const std::string dir = freshDir() + "/w";
     saveWorld(smallWorld(), dir);
     std::filesystem::remove(dir + "/floorplan.yaml");
-    EXPECT_THAT(thrownMessage([&] { loadWorld(dir); }), HasSubstr("w/floorplan.yaml: missing"));
+    EXPECT_THAT(errorOf([&] { loadWorld(dir); }), HasSubstr("w/floorplan.yaml: missing"));
 }
 
 TEST(World, MissingObjectMap) {
     const std::string dir = freshDir() + "/w";
     saveWorld(smallWorld(), dir);
     std::filesystem::remove(dir + "/objects.json");
-    EXPECT_THAT(thrownMessage([&] { loadWorld(dir); }), HasSubstr("w/objects.json: missing"));
+    EXPECT_THAT(errorOf([&] { loadWorld(dir); }), HasSubstr("w/objects.json: missing"));
 }
 
 TEST(World, RoomRasterOfAnotherSize) {
     const std::string dir = freshDir() + "/w";
     saveWorld(smallWorld(), dir);
     cv::imwrite(dir + "/rooms.png", cv::Mat1w(5, 5, static_cast<unsigned short>(1)));
-    EXPECT_THAT(thrownMessage([&] { loadWorld(dir); }), HasSubstr("rooms.png: size 5x5 differs from the floor plan's 3x2"));
+    EXPECT_THAT(errorOf([&] { loadWorld(dir); }), HasSubstr("rooms.png: size 5x5 differs from the floor plan's 3x2"));
 }
 
 TEST(RoomMap, RoomOfBoxOnAWall) {
