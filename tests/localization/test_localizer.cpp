@@ -18,6 +18,8 @@
 #include <simp/obs/ObjectClasses.h>
 
 #include <cmath>
+#include <set>
+#include <tuple>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -159,6 +161,32 @@ TEST(Localizer, KldCountShrinksWithTheSet) {
     EXPECT_GT(n_wide, 20 * n_tight);
     kld.KLD_maxSampleSize = 3000;
     EXPECT_EQ(kldParticleCount(wide, kld), 3000u);
+}
+
+TEST(Localizer, OccupiedBinCountIsTheNumberOfDistinctBins) {
+    // Each path of the counter (bitmap for a compact set, sorted keys for a spread-out one, tuples
+    // for a particle absurdly far out) against a count of distinct (x, y, phi) bin triples.
+    mrpt::slam::TKLDParams kld;
+    auto& rng = mrpt::random::getRandomGenerator();
+    rng.randomize(7);
+    const auto distinct = [&](const mrpt::poses::CPosePDFParticles& pdf) {
+        std::set<std::tuple<long, long, long>> s;
+        for (const auto& p : pdf.m_particles)
+            s.emplace(static_cast<long>(std::floor(p.d.x / kld.KLD_binSize_XY)),
+                      static_cast<long>(std::floor(p.d.y / kld.KLD_binSize_XY)),
+                      static_cast<long>(std::floor(p.d.phi / kld.KLD_binSize_PHI)));
+        return s.size();
+    };
+    mrpt::poses::CPosePDFParticles compact(3000), spread(3000);
+    for (auto& p : compact.m_particles)
+        p.d = {rng.drawGaussian1D(-3, 0.3), rng.drawGaussian1D(2, 0.3), rng.drawUniform(-M_PI, M_PI)};
+    for (auto& p : spread.m_particles)
+        p.d = {rng.drawUniform(-500.0, 500.0), rng.drawUniform(-500.0, 500.0), rng.drawUniform(-M_PI, M_PI)};
+    EXPECT_EQ(occupiedBinCount(compact, kld), distinct(compact));
+    EXPECT_EQ(occupiedBinCount(spread, kld), distinct(spread));
+    spread.m_particles[5].d.x = 1e17;  // bin products beyond 64 bits
+    EXPECT_EQ(occupiedBinCount(spread, kld), distinct(spread));
+    EXPECT_EQ(occupiedBinCount(mrpt::poses::CPosePDFParticles(0), kld), 0u);
 }
 
 TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {

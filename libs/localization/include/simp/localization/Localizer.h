@@ -123,6 +123,9 @@ class Localizer {
     std::size_t m_scans_used = 0;
 };
 
+/// Bins of kld's sizes (xy in m, phi in rad) that hold at least one particle.
+std::size_t occupiedBinCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld);
+
 /// Particles needed for a KLD bound (Fox, IJRR 2003) on the set's occupied bins of kld's bin
 /// sizes (xy in m, phi in rad as MRPT's TKLDParams holds it): (k-1)/(2 eps) (1 - 2/(9(k-1)) +
 /// sqrt(2/(9(k-1))) z_{1-delta})^3 with k occupied bins.
