@@ -1,12 +1,14 @@
 #include <simp/localization/ObjectMcl.h>
 
 #include <simp/localization/FrameLikelihood.h>
+#include <simp/localization/GaussianMotionSampler.h>
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/random/RandomGenerators.h>
 
 #include <algorithm>
@@ -34,11 +36,16 @@ void ObjectMcl::predict(const mrpt::obs::CActionCollection* actions,
         const auto movement = actions->getBestMovementEstimation();
         if (!movement || !movement->poseChange)
             throw std::invalid_argument("ObjectMcl::predict: the action collection holds no 2D robot movement");
-        m_movementDrawer.setPosePDF(*movement->poseChange);
-        mrpt::poses::CPose2D increment;
-        for (auto& p : m_particles) {
-            m_movementDrawer.drawSample(increment);
-            p.d = (mrpt::poses::CPose2D(p.d) + increment).asTPose();
+        if (const auto* gaussian = dynamic_cast<const mrpt::poses::CPosePDFGaussian*>(movement->poseChange.get())) {
+            const GaussianMotionSampler sampler(*gaussian);
+            for (auto& p : m_particles) p.d = sampler.move(p.d);
+        } else {
+            m_movementDrawer.setPosePDF(*movement->poseChange);
+            mrpt::poses::CPose2D increment;
+            for (auto& p : m_particles) {
+                m_movementDrawer.drawSample(increment);
+                p.d = (mrpt::poses::CPose2D(p.d) + increment).asTPose();
+            }
         }
     } else {
         // MRPT draws from the action's motion model and does KLD sampling when enabled.

@@ -1,5 +1,6 @@
 #include <simp/localization/ParticleSummary.h>
 
+#include <simp/localization/Angle.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -155,7 +156,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     s.mean = all.pose();
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = pdf.m_particles[i].d;
-        const Eigen::Vector3d d(p.x - s.mean.x, p.y - s.mean.y, mrpt::math::wrapToPi(p.phi - s.mean.phi));
+        const Eigen::Vector3d d(p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
         s.cov += w[i] * d * d.transpose();
     }
 
@@ -178,7 +179,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     long max_x = std::numeric_limits<long>::min(), max_y = std::numeric_limits<long>::min();
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = pdf.m_particles[i].d;
-        const double u = (mrpt::math::wrapTo2Pi(p.phi)) / (2 * M_PI) * b.nb;
+        const double u = (wrapTo2Pi(p.phi)) / (2 * M_PI) * b.nb;
         const double fx = std::floor(p.x / opts.cluster_cell_m), fy = std::floor(p.y / opts.cluster_cell_m);
         if (!(std::abs(fx) < 1e15 && std::abs(fy) < 1e15))
             throw std::runtime_error("summarizeParticles: particle " + std::to_string(i) + " at (" + std::to_string(p.x) +
@@ -214,7 +215,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = pdf.m_particles[i].d;
         const double dx = p.x - peak.x, dy = p.y - peak.y;
-        if (dx * dx + dy * dy <= r2 && std::abs(mrpt::math::wrapToPi(p.phi - peak.phi)) <= opts.cluster_max_dphi)
+        if (dx * dx + dy * dy <= r2 && std::abs(wrapToPi(p.phi - peak.phi)) <= opts.cluster_max_dphi)
             cluster.add(p, cos_phi[i], sin_phi[i], w[i]);
     }
     if (cluster.sw > 0) {
@@ -223,9 +224,9 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         for (std::size_t i = 0; i < n; ++i) {
             const auto& p = pdf.m_particles[i].d;
             const double dx = p.x - peak.x, dy = p.y - peak.y;
-            if (dx * dx + dy * dy > r2 || std::abs(mrpt::math::wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
+            if (dx * dx + dy * dy > r2 || std::abs(wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
                 continue;
-            const Eigen::Vector3d d(p.x - s.estimate.x, p.y - s.estimate.y, mrpt::math::wrapToPi(p.phi - s.estimate.phi));
+            const Eigen::Vector3d d(p.x - s.estimate.x, p.y - s.estimate.y, wrapToPi(p.phi - s.estimate.phi));
             s.cluster_cov += (w[i] / cluster.sw) * d * d.transpose();
         }
     } else {
