@@ -26,7 +26,7 @@ std::string outDir(const std::string& name) {
     return p.string();
 }
 
-labels::PosedImage camera() {
+labels::PosedImage posedImage() {
     labels::PosedImage im;
     im.id = 7;
     im.file_path = "rgb/000007.png";
@@ -89,7 +89,7 @@ std::vector<labels::Detection2D> detectionsFor(const world::World& w, const labe
 }  // namespace
 
 TEST(BoxProjection, ReprojectionAndTruncation) {
-    const auto im = camera();
+    const auto im = posedImage();
     const world::World w = scene();
     const auto& table = w.objects.objects[1].box;
     const auto p = camera::projectBox(im.camera, table);
@@ -109,7 +109,7 @@ TEST(BoxProjection, ReprojectionAndTruncation) {
 }
 
 TEST(Visibility, BoxesAndWallsOcclude) {
-    const auto im = camera();
+    const auto im = posedImage();
     const world::World w = scene();
     std::vector<geometry::Box3D> boxes;
     for (const auto& o : w.objects.objects) boxes.push_back(o.box);
@@ -128,7 +128,7 @@ TEST(Visibility, BoxesAndWallsOcclude) {
 TEST(Visibility, DoorsHideNothing) {
     // An open door 2 m ahead in front of the table (3 m): the labels see the table through it, as
     // the simulator does (camera/Occluders.h); before, the door box hid the table (visibility 0).
-    const auto im = camera();
+    const auto im = posedImage();
     world::World w = scene();
     w.objects.class_names.push_back("door");
     w.objects.class_noise.push_back(std::nullopt);
@@ -149,7 +149,7 @@ TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
     const std::string d = outDir("scene");
     const world::World w = scene();
     world::saveWorld(w, d + "/world");
-    const auto im = camera();
+    const auto im = posedImage();
     labels::writeCameraFrames(d + "/frames.json", {im});
     std::ofstream csv(d + "/det.csv");
     csv << "image_id,class,x_min,y_min,x_max,y_max,score\n";
@@ -258,7 +258,7 @@ TEST(CameraFrames, PoseFromRobotPosesAndRig) {
     const auto poses = io::readTum(d + "/poses.tum");
     const auto ims = labels::readCameraFrames(d + "/frames.json", &rig, &poses);
     ASSERT_EQ(ims.size(), 1u);
-    const auto ref = camera();  // at (0, 0, 1) looking along +x
+    const auto ref = posedImage();  // at (0, 0, 1) looking along +x
     EXPECT_LT((ims[0].camera.world_T_camera.matrix() - ref.camera.world_T_camera.matrix()).norm(), 1e-12);
     EXPECT_LT((ims[0].camera.K() - ref.camera.K()).norm(), 1e-12);
     EXPECT_EQ(ims[0].camera.widthPx(), 640);

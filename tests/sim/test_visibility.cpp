@@ -25,7 +25,7 @@ simp::world::MapObject cabinetAt(double x, double y, std::int64_t id = 1) {
 }
 
 simp::camera::PinholeCamera cameraAt(double x, double y, double yaw) {
-    return simp::camera::PinholeCamera::onRobot({x, y, yaw}, simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
+    return simp::camera::PinholeCamera::onRobot(mrpt::math::TPose2D(x, y, yaw), simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
                                                 simp::sim::CameraParams().intrinsics);
 }
 
@@ -176,4 +176,21 @@ TEST(SimDetection, MissesWrongLabelsAndScores) {
     EXPECT_NEAR(detected / double(n), 0.7, 4 * se(0.7, n));
     EXPECT_NEAR(wrong / double(detected), 0.2, 4 * se(0.2, detected));
     EXPECT_GT(conf_right / (detected - wrong), conf_wrong / wrong + 0.2);
+}
+
+TEST(SimVisibility, DoorsAreSeenButHideNothing) {
+    // The same tall screen as above, but of class door (camera::occludes() is false for doors):
+    // the cabinet behind it is seen, and so is the door.
+    const auto& names = simp::obs::defaultClassNames();
+    simp::sim::VisibilityParams vis;
+    const auto room = tinyWorld(false);
+    std::vector<simp::world::MapObject> objects{cabinetAt(5.0, 2.0, 1)};
+    objects.push_back(cabinetAt(2.6, 2.0, 2));
+    objects.back().class_id = simp::obs::classIndexOf(names, "door");
+    objects.back().box = simp::geometry::makeUprightBox({2.6, 2.0, 0.6}, {0.05, 2.0, 1.2}, 0.0);  // all corners in view
+    const auto seen = simp::sim::visibleObjects(cameraAt(1.0, 2.0, 0.0), objects, names, room, vis);
+    ASSERT_EQ(seen.size(), 2u);
+    EXPECT_EQ(seen[0].index, 0u);
+    EXPECT_DOUBLE_EQ(seen[0].occluded_fraction, 0.0);
+    EXPECT_EQ(seen[1].index, 1u);
 }
