@@ -3,6 +3,8 @@
 /// board half outside the image (truncation), a chair behind a wall of the floor plan.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
+#include <simp/camera/RayCastVisibility.h>
+#include <simp/labels/LabelGenerator.h>
 #include <simp/labels/LabelsApp.h>
 #include <simp/labels/Omni3DBox.h>
 #include <simp/world/World.h>
@@ -24,17 +26,15 @@ std::string outDir(const std::string& name) {
     return p.string();
 }
 
-labels::PosedImage camera() {
+labels::PosedImage posedImage() {
     labels::PosedImage im;
     im.id = 7;
     im.file_path = "rgb/000007.png";
-    im.width = 640;
-    im.height = 480;
-    im.K << 400, 0, 320, 0, 400, 240, 0, 0, 1;
+    im.camera.intrinsics = camera::makeIntrinsics(640, 480, 400, 400, 320, 240);
     Eigen::Matrix3d R;  // columns: camera x = world -y, camera y = world -z, camera z = world +x
     R << 0, 0, 1, -1, 0, 0, 0, -1, 0;
-    im.world_T_camera.linear() = R;
-    im.world_T_camera.translation() = Eigen::Vector3d(0, 0, 1);
+    im.camera.world_T_camera.linear() = R;
+    im.camera.world_T_camera.translation() = Eigen::Vector3d(0, 0, 1);
     return im;
 }
 
@@ -60,11 +60,11 @@ world::World scene() {
     return w;
 }
 
-labels::ImageBox manualProjection(const labels::PosedImage& im, const geometry::Box3D& b) {
-    labels::ImageBox out(1e9, 1e9, -1e9, -1e9);
+camera::ImageBox manualProjection(const labels::PosedImage& im, const geometry::Box3D& b) {
+    camera::ImageBox out(1e9, 1e9, -1e9, -1e9);
     for (const auto& X : b.corners()) {
-        const Eigen::Vector3d Xc = im.world_T_camera.linear().transpose() * (X - im.world_T_camera.translation());
-        const Eigen::Vector3d x = im.K * Xc;
+        const Eigen::Vector3d Xc = im.camera.world_T_camera.linear().transpose() * (X - im.camera.world_T_camera.translation());
+        const Eigen::Vector3d x = im.camera.K() * Xc;
         out(0) = std::min(out(0), x.x() / x.z()), out(1) = std::min(out(1), x.y() / x.z());
         out(2) = std::max(out(2), x.x() / x.z()), out(3) = std::max(out(3), x.y() / x.z());
     }
@@ -78,8 +78,8 @@ const labels::LabelAnnotation* annotationOf(const labels::LabelSet& s, std::int6
 }
 
 std::vector<labels::Detection2D> detectionsFor(const world::World& w, const labels::PosedImage& im) {
-    const auto pb = labels::projectBox(im, w.objects.objects[1].box);
-    const auto pc = labels::projectBox(im, w.objects.objects[2].box);
+    const auto pb = camera::projectBox(im.camera, w.objects.objects[1].box);
+    const auto pc = camera::projectBox(im.camera, w.objects.objects[2].box);
     return {{7, "table", pb.bbox_trunc(0) + 3, pb.bbox_trunc(1) - 2, pb.bbox_trunc(2) + 2, pb.bbox_trunc(3) - 4, 0.9},
             {7, "board", pc.bbox_trunc(0), pc.bbox_trunc(1), pc.bbox_trunc(2), pc.bbox_trunc(3), 0.8},
             {7, "table", pc.bbox_trunc(0), pc.bbox_trunc(1), pc.bbox_trunc(2), pc.bbox_trunc(3), 0.7},  // wrong class
@@ -89,46 +89,67 @@ std::vector<labels::Detection2D> detectionsFor(const world::World& w, const labe
 }  // namespace
 
 TEST(BoxProjection, ReprojectionAndTruncation) {
-    const auto im = camera();
+    const auto im = posedImage();
     const world::World w = scene();
     const auto& table = w.objects.objects[1].box;
-    const auto p = labels::projectBox(im, table);
+    const auto p = camera::projectBox(im.camera, table);
     EXPECT_TRUE(p.visible_in_front);
     EXPECT_LT((p.bbox_proj - manualProjection(im, table)).norm(), 1e-9);
     EXPECT_NEAR(p.truncation, 0.0, 1e-12);
     // Board centred on the left border: about half of its projected box is outside.
-    const auto q = labels::projectBox(im, w.objects.objects[2].box);
+    const auto q = camera::projectBox(im.camera, w.objects.objects[2].box);
     EXPECT_LT(q.bbox_proj(0), 0.0);
     EXPECT_NEAR(q.truncation, 0.5, 0.03);
     // Behind the camera: nothing; across the camera plane: clipped at the near plane, still finite.
-    EXPECT_FALSE(labels::projectBox(im, geometry::makeUprightBox({-2, 0, 1}, {0.5, 0.5, 0.5}, 0)).visible_in_front);
-    const auto r = labels::projectBox(im, geometry::makeUprightBox({0.2, 0, 1}, {1.0, 0.5, 0.5}, 0));
+    EXPECT_FALSE(camera::projectBox(im.camera, geometry::makeUprightBox({-2, 0, 1}, {0.5, 0.5, 0.5}, 0)).visible_in_front);
+    const auto r = camera::projectBox(im.camera, geometry::makeUprightBox({0.2, 0, 1}, {1.0, 0.5, 0.5}, 0));
     EXPECT_TRUE(r.visible_in_front);
     EXPECT_TRUE(r.bbox_proj.allFinite());
     EXPECT_GT(r.truncation, 0.5);
 }
 
 TEST(Visibility, BoxesAndWallsOcclude) {
-    const auto im = camera();
+    const auto im = posedImage();
     const world::World w = scene();
     std::vector<geometry::Box3D> boxes;
     for (const auto& o : w.objects.objects) boxes.push_back(o.box);
-    const auto with_walls = labels::computeVisibility(im, boxes, &w.floorplan, {});
+    const camera::FloorPlanGrid walls(w.floorplan);
+    const auto with_walls = camera::rayCastVisibility(im.camera, boxes, &walls, {});
     EXPECT_LT(with_walls[0], 0.1) << "chair behind the table";
     EXPECT_DOUBLE_EQ(with_walls[1], 1.0);
     EXPECT_DOUBLE_EQ(with_walls[2], 1.0);
     EXPECT_DOUBLE_EQ(with_walls[3], 0.0) << "chair behind the wall";
-    const auto no_walls = labels::computeVisibility(im, boxes, nullptr, {});
+    const auto no_walls = camera::rayCastVisibility(im.camera, boxes, nullptr, {});
     EXPECT_DOUBLE_EQ(no_walls[3], 1.0);
     // Ray-box entry depth: straight ahead into the table's near face at x = 2.6 m.
-    EXPECT_NEAR(labels::rayBoxEntry({0, 0, 1}, {1, 0, 0}, boxes[1]), 2.6, 1e-12);
+    EXPECT_NEAR(camera::rayBoxEntry({0, 0, 1}, {1, 0, 0}, boxes[1]), 2.6, 1e-12);
+}
+
+TEST(Visibility, DoorsHideNothing) {
+    // An open door 2 m ahead in front of the table (3 m): the labels see the table through it, as
+    // the simulator does (camera/Occluders.h); before, the door box hid the table (visibility 0).
+    const auto im = posedImage();
+    world::World w = scene();
+    w.objects.class_names.push_back("door");
+    w.objects.class_noise.push_back(std::nullopt);
+    w.objects.objects.push_back(object(5, 3, {2.0, 0.0, 1.0}, {0.05, 1.2, 2.0}, 0.0));
+    labels::LabelOptions opts;
+    opts.keep_unmatched = true;  // annotate every object in view, no 2D detections needed
+    const labels::LabelSet s = labels::generateLabels(w.objects, &w.floorplan, {im}, {}, opts);
+    const auto* table = annotationOf(s, 2);
+    const auto* door = annotationOf(s, 5);
+    ASSERT_NE(table, nullptr);
+    ASSERT_NE(door, nullptr);
+    EXPECT_DOUBLE_EQ(table->visibility, 1.0);
+    EXPECT_DOUBLE_EQ(door->visibility, 1.0);
+    EXPECT_LT(annotationOf(s, 1)->visibility, 0.1) << "the chair is still behind the table";
 }
 
 TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
     const std::string d = outDir("scene");
     const world::World w = scene();
     world::saveWorld(w, d + "/world");
-    const auto im = camera();
+    const auto im = posedImage();
     labels::writeCameraFrames(d + "/frames.json", {im});
     std::ofstream csv(d + "/det.csv");
     csv << "image_id,class,x_min,y_min,x_max,y_max,score\n";
@@ -184,7 +205,7 @@ TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
     for (std::size_t v = 0; v < 8; ++v) {
         const Eigen::Vector3d p(a["bbox3D_cam"][v][0].get<double>(), a["bbox3D_cam"][v][1].get<double>(),
                                 a["bbox3D_cam"][v][2].get<double>());
-        const Eigen::Vector3d pw = im.world_T_camera * p;
+        const Eigen::Vector3d pw = im.camera.world_T_camera * p;
         double best = 1e9;
         for (const auto& cw : world_corners) best = std::min(best, (cw - pw).norm());
         EXPECT_LT(best, 1e-9) << "v" << v;
@@ -237,10 +258,10 @@ TEST(CameraFrames, PoseFromRobotPosesAndRig) {
     const auto poses = io::readTum(d + "/poses.tum");
     const auto ims = labels::readCameraFrames(d + "/frames.json", &rig, &poses);
     ASSERT_EQ(ims.size(), 1u);
-    const auto ref = camera();  // at (0, 0, 1) looking along +x
-    EXPECT_LT((ims[0].world_T_camera.matrix() - ref.world_T_camera.matrix()).norm(), 1e-12);
-    EXPECT_LT((ims[0].K - ref.K).norm(), 1e-12);
-    EXPECT_EQ(ims[0].width, 640);
+    const auto ref = posedImage();  // at (0, 0, 1) looking along +x
+    EXPECT_LT((ims[0].camera.world_T_camera.matrix() - ref.camera.world_T_camera.matrix()).norm(), 1e-12);
+    EXPECT_LT((ims[0].camera.K() - ref.camera.K()).norm(), 1e-12);
+    EXPECT_EQ(ims[0].camera.widthPx(), 640);
     // Without rig and poses the same file is an error naming the key.
     try {
         labels::readCameraFrames(d + "/frames.json");

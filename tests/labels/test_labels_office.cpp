@@ -4,7 +4,8 @@
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
-#include <simp/labels/Visibility.h>
+#include <simp/camera/RayCastVisibility.h>
+#include <simp/labels/CameraFrames.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/SimpFormat.h>
 
@@ -31,12 +32,13 @@ TEST(LabelsOffice, ObjectsSeenFromAFreeViewpointAreVisible) {
     const world::World w = world::importSimpMap(kOffice);
     std::vector<geometry::Box3D> boxes;
     for (const auto& o : w.objects.objects) boxes.push_back(o.box);
-    labels::PosedImage im;
-    im.K << 380.07, 0, 324.47, 0, 379.66, 237.79, 0, 0, 1;
+    camera::PinholeCamera cam;  // the authors' intrinsics
     int tried = 0, visible_masked = 0, visible_unmasked = 0;
-    labels::VisibilityOptions masked, unmasked;
-    masked.pixel_step = unmasked.pixel_step = 8;
-    unmasked.ignore_object_cells = false;
+    camera::RayCastParams params;
+    params.pixel_step = 8;
+    const camera::FloorPlanGrid unmasked(w.floorplan);
+    camera::FloorPlanGrid masked(w.floorplan);
+    masked.clearWallsUnder(boxes, 0.10);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
         // A viewpoint 1.2 m beyond the box's half diagonal, in the first of 8 directions whose
         // straight path to the object is free floor in the plan up to 0.15 m from the box.
@@ -46,22 +48,20 @@ TEST(LabelsOffice, ObjectsSeenFromAFreeViewpointAreVisible) {
         near_box.size += Eigen::Vector3d::Constant(0.3);
         for (int k = 0; k < 8; ++k) {
             const double a = k * M_PI / 4;
-            const Eigen::Vector2d cam = c + r * Eigen::Vector2d(std::cos(a), std::sin(a));
+            const Eigen::Vector2d at = c + r * Eigen::Vector2d(std::cos(a), std::sin(a));
             bool ok = true;
             for (double s = 0; s <= r && ok; s += 0.025) {
-                const Eigen::Vector2d p = cam - s * Eigen::Vector2d(std::cos(a), std::sin(a));
+                const Eigen::Vector2d p = at - s * Eigen::Vector2d(std::cos(a), std::sin(a));
                 if (geometry::containsPoint(near_box, Eigen::Vector3d(p.x(), p.y(), boxes[i].center.z()))) break;
                 ok = freeCell(w.floorplan, p.x(), p.y());
             }
             if (!ok) continue;
             const double yaw = a + M_PI;  // looking back at the object
-            const mrpt::poses::CPose3D T = mrpt::poses::CPose3D(mrpt::poses::CPose2D(cam.x(), cam.y(), 0)) +
-                                           obs::cameraPoseOnRobot(0, 0, 0.63, yaw);
-            im.world_T_camera.linear() = T.getRotationMatrix().asEigen();
-            im.world_T_camera.translation() = Eigen::Vector3d(T.x(), T.y(), T.z());
+            cam.world_T_camera = camera::toIsometry(mrpt::poses::CPose3D(mrpt::poses::CPose2D(at.x(), at.y(), 0)) +
+                                                    obs::cameraPoseOnRobot(0, 0, 0.63, yaw));
             ++tried;
-            const double vm = labels::computeVisibility(im, boxes, &w.floorplan, masked)[i];
-            const double vu = labels::computeVisibility(im, boxes, &w.floorplan, unmasked)[i];
+            const double vm = camera::rayCastVisibility(cam, boxes, &masked, params)[i];
+            const double vu = camera::rayCastVisibility(cam, boxes, &unmasked, params)[i];
             visible_masked += vm > 0.5;
             visible_unmasked += vu > 0.5;
             break;

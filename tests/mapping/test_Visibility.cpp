@@ -1,23 +1,22 @@
 #include <gtest/gtest.h>
 #include <simp/mapping/ObjectMapBuilder.h>
-#include <simp/mapping/Visibility.h>
+#include <simp/camera/ZBufferVisibility.h>
 
 #include "MappingTestScene.h"
 
 using namespace simp::mapping;
+using simp::camera::BoxView;
+using simp::camera::PinholeCamera;
+using simp::camera::ZBufferParams;
+using simp::camera::ZBufferRenderer;
 using simp::geometry::makeUprightBox;
 
 namespace {
 
 /// A camera at (x, y, 0.63) looking horizontally along yaw (world).
 PinholeCamera cameraAt(double x, double y, double yaw) {
-    const mrpt::poses::CPose3D robot(x, y, 0, yaw, 0, 0);
-    const mrpt::poses::CPose3D w = robot + simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0);
-    PinholeCamera c;
-    c.world_T_camera.linear() = w.getRotationMatrix().asEigen();
-    c.world_T_camera.translation() = Eigen::Vector3d(w.x(), w.y(), w.z());
-    c.fx_px = 380.07, c.fy_px = 379.66, c.cx_px = 324.47, c.cy_px = 237.79;
-    return c;
+    return PinholeCamera::onRobot(mrpt::math::TPose2D(x, y, yaw), simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
+                                  simp::camera::defaultIntrinsics());
 }
 
 simp::world::ObjectMapData mapOf(const std::vector<simp::geometry::Box3D>& boxes) {
@@ -39,9 +38,9 @@ TEST(Visibility, RenderedAreaMatchesTheProjection) {
     // A 1 m x 1 m face 3 m ahead, centred on the optical axis: 1/3 * f px per side.
     const PinholeCamera cam = cameraAt(0, 0, 0);
     const auto box = makeUprightBox({3.5, 0, 0.63}, {1.0, 1.0, 1.0}, 0.0);  // front face at x = 3
-    VisibilityRenderer r;
+    ZBufferRenderer r;
     std::vector<BoxView> views;
-    RenderParams p;
+    ZBufferParams p;
     r.render(cam, {box}, nullptr, p, views);
     const double side_px = 380.0 / 3.0 / p.downscale;  // z-buffer pixels per side
     EXPECT_NEAR(views[0].covered_px, side_px * side_px, 0.25 * side_px * side_px);
@@ -88,9 +87,9 @@ TEST(Visibility, OccludedAndTruncatedObjectsAreNotActive) {
     EXPECT_FALSE(active[2]);     // more than half of its projection is outside the image
     EXPECT_TRUE(candidate[2]);   // ... but partly visible: it may still be associated
 
-    VisibilityRenderer r;
+    ZBufferRenderer r;
     std::vector<BoxView> views;
-    r.render(cameraAt(0, 0, 0), {big, hidden, edge}, nullptr, RenderParams{}, views);
+    r.render(cameraAt(0, 0, 0), {big, hidden, edge}, nullptr, ZBufferParams{}, views);
     EXPECT_GT(views[2].truncated_fraction, opts.truncation_threshold);
     EXPECT_NEAR(views[1].occludedFraction(), 1.0, 1e-12);
 }
@@ -126,9 +125,9 @@ TEST(Visibility, IntersectingBoxesDoNotHideEachOtherWhenGrouped) {
     opts.intersecting_boxes_occlude = false;
     EXPECT_EQ(activeWith(opts), (std::vector<bool>{true, true, false}));
     // the renderer with groups: visible pixels of the grouped pair are all their covered pixels
-    VisibilityRenderer r;
+    ZBufferRenderer r;
     std::vector<BoxView> views;
-    RenderParams p;
+    ZBufferParams p;
     const std::vector<int> group{0, 0, 2};
     p.group = &group;
     r.render(cameraAt(0, 0, 0), {twin, dup, behind}, nullptr, p, views);

@@ -14,7 +14,7 @@ namespace {
 // Floor [0, 10] x [0, 6]; inner wall at x = 5 with a door for y in (2.6, 3.4). The grid stores
 // its geometry in float: positions agree to 1e-6 m.
 const auto kGrid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);
-const WallGrid kWalls(kGrid);
+const simp::camera::FloorPlanGrid kWalls(kGrid);
 // Wall faces that bound the left room, from the grid's own cells (makeFloorPlan: two cells per wall).
 const double kRes = kGrid.getResolution();
 const double kFaceY0 = kGrid.idx2y(kGrid.y2idx(0.0)) + 0.5 * kRes;    // the floor's lower wall
@@ -114,7 +114,7 @@ TEST(WallAlignment, SideFacingADoorGapIsNotAligned) {
 
 TEST(WallAlignment, NoFloorPlanOrBadParametersChangeNothing) {
     const Box3D b = cabinetAtGap(0.1);
-    EXPECT_TRUE(alignToWalls(b, WallGrid(), WallAlignmentParams()).center.isApprox(b.center));
+    EXPECT_TRUE(alignToWalls(b, simp::camera::FloorPlanGrid(), WallAlignmentParams()).center.isApprox(b.center));
     WallAlignmentParams one_ray;
     one_ray.rays_per_side = 1;
     EXPECT_TRUE(alignToWalls(b, kWalls, one_ray).center.isApprox(b.center));
@@ -242,7 +242,7 @@ TEST(WallAlignment, AutoIsOffOnAFloorPlanThatDrawsFurniture) {
     };
     drawBlock(6.0, 1.0, 7.6, 2.0);  // a drawn table of 1.6 m x 1.0 m
     // interior: (1.6 - one cell) x (1.0 - one cell) inside the one-cell outline
-    EXPECT_NEAR(WallGrid(grid).enclosedUnknownArea_m2(), 1.55 * 0.95, 1e-6);
+    EXPECT_NEAR(simp::camera::FloorPlanGrid(grid).enclosedUnknownArea_m2(), 1.55 * 0.95, 1e-6);
     EXPECT_NEAR(kWalls.enclosedUnknownArea_m2(), 0.0, 1e-12);
     auto opts = test::testOptions();
     ObjectMapBuilder plain(opts);
@@ -260,6 +260,6 @@ TEST(WallAlignment, AutoIsOffOnAFloorPlanThatDrawsFurniture) {
     off.setFloorPlan(kGrid, {});
     EXPECT_FALSE(off.wallAlignmentActive());
     // A detection centred in the drawn table (unknown, but enclosed) is inside the building.
-    EXPECT_FALSE(WallGrid(grid).isOutside(6.6, 1.5));
-    EXPECT_TRUE(WallGrid(grid).isOutside(-0.3, 3.0));
+    EXPECT_FALSE(simp::camera::FloorPlanGrid(grid).isOutside(6.6, 1.5));
+    EXPECT_TRUE(simp::camera::FloorPlanGrid(grid).isOutside(-0.3, 3.0));
 }

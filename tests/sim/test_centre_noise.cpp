@@ -75,9 +75,9 @@ TEST(SimCentreNoise, DrawnOffsetsHaveTheCentreCovariance) {
     p.persistent_variance_fraction = 0.0;
     const auto o = boardAt(0.0);
     const auto c = simp::sim::centreNoiseOf(boardModel(), o, p);
-    simp::sim::CameraView view;
-    view.T_world_camera = Eigen::Isometry3d::Identity();
-    view.T_world_camera.translation() = Eigen::Vector3d(2.0, 1.0 - p.reference_distance_m, 0.63);
+    simp::camera::PinholeCamera view;
+    view.world_T_camera = Eigen::Isometry3d::Identity();
+    view.world_T_camera.translation() = Eigen::Vector3d(2.0, 1.0 - p.reference_distance_m, 0.63);
     simp::sim::Rng rng(9);
     const int n = 20000;
     double s_along = 0;

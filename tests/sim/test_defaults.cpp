@@ -64,12 +64,12 @@ void expectSame(const simp::sim::SimParams& a, const simp::sim::SimParams& b) {
     SIMP_EXPECT_SAME(cameras.mount_radius_m);
     SIMP_EXPECT_SAME(cameras.height_m);
     SIMP_EXPECT_SAME(cameras.pitch_down_deg);
-    SIMP_EXPECT_SAME(cameras.width_px);
-    SIMP_EXPECT_SAME(cameras.height_px);
-    SIMP_EXPECT_SAME(cameras.fx);
-    SIMP_EXPECT_SAME(cameras.fy);
-    SIMP_EXPECT_SAME(cameras.cx);
-    SIMP_EXPECT_SAME(cameras.cy);
+    SIMP_EXPECT_SAME(cameras.intrinsics.ncols);
+    SIMP_EXPECT_SAME(cameras.intrinsics.nrows);
+    SIMP_EXPECT_SAME(cameras.intrinsics.fx());
+    SIMP_EXPECT_SAME(cameras.intrinsics.fy());
+    SIMP_EXPECT_SAME(cameras.intrinsics.cx());
+    SIMP_EXPECT_SAME(cameras.intrinsics.cy());
     SIMP_EXPECT_SAME(cameras.rate_hz);
     SIMP_EXPECT_SAME(visibility.min_range_m);
     SIMP_EXPECT_SAME(visibility.max_range_m);

@@ -24,9 +24,9 @@ simp::world::MapObject cabinetAt(double x, double y, std::int64_t id = 1) {
     return o;
 }
 
-simp::sim::CameraView cameraAt(double x, double y, double yaw) {
-    simp::sim::CameraParams cam;
-    return simp::sim::makeCameraView({x, y, yaw}, simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0), cam);
+simp::camera::PinholeCamera cameraAt(double x, double y, double yaw) {
+    return simp::camera::PinholeCamera::onRobot(mrpt::math::TPose2D(x, y, yaw), simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
+                                                simp::sim::CameraParams().intrinsics);
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ TEST(SimVisibility, RangeFieldOfViewAndTruncation) {
     EXPECT_TRUE(simp::sim::visibleObjects(cameraAt(1.0, 2.0, M_PI), objects, names, room, vis).empty());  // behind
     // at the image border: at least half of the corners must project inside
     const auto view = cameraAt(1.0, 2.0, -0.7);
-    const auto b = objects[0].box.transformed(view.T_world_camera.inverse());
+    const auto b = objects[0].box.transformed(view.world_T_camera.inverse());
     simp::obs::ImageBox2D box2d;
     double inside = 0;
     ASSERT_TRUE(simp::sim::projectBox(view, b, box2d, inside));
@@ -91,7 +91,7 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
     p.min_confidence = 0;
     const auto o = cabinetAt(4.0, 2.0);
     const auto view = cameraAt(1.0, 2.0, 0.0);
-    ASSERT_NEAR((o.box.center - view.T_world_camera.translation()).head<2>().norm(), p.reference_distance_m, 1e-9);
+    ASSERT_NEAR((o.box.center - view.world_T_camera.translation()).head<2>().norm(), p.reference_distance_m, 1e-9);
     const double yaw = simp::sim::noiseFrameYaw(o.box);
     simp::sim::Rng rng(3);
     const int n = 5000;
@@ -101,12 +101,12 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
         const auto d = simp::sim::detectObject(view, o, m, 14, p, rng, static_cast<std::uint64_t>(i));
         ASSERT_TRUE(d.has_value());
         EXPECT_EQ(d->class_id, o.class_id);
-        const Eigen::Vector3d c_world = view.T_world_camera * d->box_in_camera.center;
+        const Eigen::Vector3d c_world = view.world_T_camera * d->box_in_camera.center;
         const Eigen::Vector2d off = Eigen::Rotation2Dd(-yaw) * (c_world.head<2>() - o.box.center.head<2>());
         sum += off;
         sum2 += off * off.transpose();
         // the detector's box convention: H (vertical extent) along the box's y axis
-        EXPECT_NEAR(std::abs(d->box_in_camera.R.col(1).dot(view.T_world_camera.linear().transpose() * Eigen::Vector3d::UnitZ())), 1.0, 1e-9);
+        EXPECT_NEAR(std::abs(d->box_in_camera.R.col(1).dot(view.world_T_camera.linear().transpose() * Eigen::Vector3d::UnitZ())), 1.0, 1e-9);
     }
     const Eigen::Vector2d mean = sum / n;
     const Eigen::Matrix2d cov = sum2 / n - mean * mean.transpose();
@@ -176,4 +176,21 @@ TEST(SimDetection, MissesWrongLabelsAndScores) {
     EXPECT_NEAR(detected / double(n), 0.7, 4 * se(0.7, n));
     EXPECT_NEAR(wrong / double(detected), 0.2, 4 * se(0.2, detected));
     EXPECT_GT(conf_right / (detected - wrong), conf_wrong / wrong + 0.2);
+}
+
+TEST(SimVisibility, DoorsAreSeenButHideNothing) {
+    // The same tall screen as above, but of class door (camera::occludes() is false for doors):
+    // the cabinet behind it is seen, and so is the door.
+    const auto& names = simp::obs::defaultClassNames();
+    simp::sim::VisibilityParams vis;
+    const auto room = tinyWorld(false);
+    std::vector<simp::world::MapObject> objects{cabinetAt(5.0, 2.0, 1)};
+    objects.push_back(cabinetAt(2.6, 2.0, 2));
+    objects.back().class_id = simp::obs::classIndexOf(names, "door");
+    objects.back().box = simp::geometry::makeUprightBox({2.6, 2.0, 0.6}, {0.05, 2.0, 1.2}, 0.0);  // all corners in view
+    const auto seen = simp::sim::visibleObjects(cameraAt(1.0, 2.0, 0.0), objects, names, room, vis);
+    ASSERT_EQ(seen.size(), 2u);
+    EXPECT_EQ(seen[0].index, 0u);
+    EXPECT_DOUBLE_EQ(seen[0].occluded_fraction, 0.0);
+    EXPECT_EQ(seen[1].index, 1u);
 }

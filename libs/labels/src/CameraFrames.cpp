@@ -27,12 +27,7 @@ void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
     if (!io::interpolatePose(*poses, im.timestamp_s, p))
         world::failAt(path, k + ".timestamp", "time " + std::to_string(im.timestamp_s) + " s is outside the poses' range");
     const RigCamera& rc = rig->cameras[static_cast<std::size_t>(c)];
-    const mrpt::poses::CPose3D world_T_camera = mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)) + rc.robotTCamera();
-    im.world_T_camera.linear() = world_T_camera.getRotationMatrix().asEigen();
-    im.world_T_camera.translation() = Eigen::Vector3d(world_T_camera.x(), world_T_camera.y(), world_T_camera.z());
-    im.K << rc.intrinsics.fx(), 0, rc.intrinsics.cx(), 0, rc.intrinsics.fy(), rc.intrinsics.cy(), 0, 0, 1;
-    im.width = static_cast<int>(rc.intrinsics.ncols);
-    im.height = static_cast<int>(rc.intrinsics.nrows);
+    im.camera = camera::PinholeCamera::onRobot(mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)), rc.robotTCamera(), rc.intrinsics);
 }
 
 }  // namespace
@@ -65,11 +60,10 @@ std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRi
             world::failAt(path, k + ".width/height",
                           std::to_string(w) + " x " + std::to_string(h) + " px exceeds the maximum side " +
                               std::to_string(obs::limits::kMaxImageSide_px) + " px");
-        im.width = static_cast<int>(w);
-        im.height = static_cast<int>(h);
-        im.K = detail::matrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
-        if (!(im.K(0, 0) > 0) || !(im.K(1, 1) > 0) || im.K(1, 0) != 0 || im.K(2, 0) != 0 || im.K(2, 1) != 0 || im.K(2, 2) != 1)
+        const Eigen::Matrix3d K = detail::matrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
+        if (!(K(0, 0) > 0) || !(K(1, 1) > 0) || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
             world::failAt(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
+        im.camera.setIntrinsics(K, static_cast<int>(w), static_cast<int>(h));
         const auto p = detail::numbers(world::requireKey(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
         for (double x : p)
             if (!(std::abs(x) <= obs::limits::kMaxCoordinate_m))
@@ -85,8 +79,8 @@ std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRi
             if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
                 world::failAt(path, k + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
         }
-        im.world_T_camera.linear() = R;
-        im.world_T_camera.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+        im.camera.world_T_camera.linear() = R;
+        im.camera.world_T_camera.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
         out.push_back(im);
     }
     return out;
@@ -99,11 +93,11 @@ void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& i
         o["id"] = im.id;
         o["file_path"] = im.file_path;
         o["timestamp"] = im.timestamp_s;
-        o["width"] = im.width;
-        o["height"] = im.height;
-        o["K"] = detail::toJson(im.K);
-        o["position_m"] = detail::toJson(Eigen::Vector3d(im.world_T_camera.translation()));
-        o["rotation"] = detail::toJson(Eigen::Matrix3d(im.world_T_camera.linear()));
+        o["width"] = im.camera.widthPx();
+        o["height"] = im.camera.heightPx();
+        o["K"] = detail::toJson(im.camera.K());
+        o["position_m"] = detail::toJson(Eigen::Vector3d(im.camera.world_T_camera.translation()));
+        o["rotation"] = detail::toJson(Eigen::Matrix3d(im.camera.world_T_camera.linear()));
         ims.push_back(o);
     }
     world::writeJsonFile(nlohmann::ordered_json{{"images", ims}}, path, world::JsonLayout::Indent1);

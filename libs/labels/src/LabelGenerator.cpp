@@ -1,5 +1,7 @@
 /// \file LabelGenerator.cpp
 #include <simp/geometry/Hungarian.h>
+#include <simp/camera/Occluders.h>
+#include <simp/camera/RayCastVisibility.h>
 #include <simp/labels/LabelGenerator.h>
 
 #include <cmath>
@@ -48,7 +50,7 @@ geometry::Box3D boxInCameraOmni3D(const PosedImage& image, const geometry::Box3D
     const geometry::Box3D up = geometry::canonicalizeUpright(box_world);
     Eigen::Matrix3d R_world_local;  // columns: local x = object x, local y = down, local z = object y
     R_world_local << up.R.col(0), -up.R.col(2), up.R.col(1);
-    const Eigen::Isometry3d camera_T_world = image.world_T_camera.inverse();
+    const Eigen::Isometry3d camera_T_world = image.camera.world_T_camera.inverse();
     geometry::Box3D b;
     b.center = camera_T_world * up.center;
     b.R = camera_T_world.linear() * R_world_local;
@@ -72,10 +74,27 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
 
     std::vector<geometry::Box3D> boxes;
     for (const auto& o : gt.objects) boxes.push_back(o.box);
+    // Walls: the floor plan's, minus the cells under the objects (furniture outlines of a GT plan).
+    camera::FloorPlanGrid walls;
+    if (floorplan != nullptr) {
+        walls = camera::FloorPlanGrid(*floorplan, 1.0 - options.visibility.occupied_threshold);
+        if (options.visibility.ignore_object_cells) walls.clearWallsUnder(boxes, options.visibility.object_cell_margin_m);
+    }
+    // Doors stand in open doorways: seen, but they hide nothing (as in the simulator and the mapper).
+    const std::vector<char> class_occludes = camera::occludingClasses(gt.class_names);
+    std::vector<char> occludes(boxes.size(), 1);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const auto c = static_cast<std::size_t>(gt.objects[i].class_id);
+        if (c < class_occludes.size()) occludes[i] = class_occludes[c];
+    }
+    camera::RayCastParams ray_cast;
+    ray_cast.pixel_step = options.visibility.pixel_step;
+    ray_cast.max_range_m = options.visibility.max_range_m;
     for (const PosedImage& im : images) {
-        std::vector<ProjectedBox> proj(boxes.size());
-        for (std::size_t i = 0; i < boxes.size(); ++i) proj[i] = projectBox(im, boxes[i], options.near_m);
-        const std::vector<double> vis = computeVisibility(im, boxes, floorplan, options.visibility);
+        std::vector<camera::ProjectedBox> proj(boxes.size());
+        for (std::size_t i = 0; i < boxes.size(); ++i) proj[i] = camera::projectBox(im.camera, boxes[i], options.near_m);
+        const std::vector<double> vis =
+            camera::rayCastVisibility(im.camera, boxes, floorplan != nullptr ? &walls : nullptr, ray_cast, &occludes);
         const auto& dets = by_image[im.id];
         std::vector<int> match_of_object(boxes.size(), -1);
         // Per class: Hungarian assignment on 1 - IoU(bbox2D_trunc, detection), accepted above the threshold.
@@ -83,7 +102,7 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
             std::vector<std::size_t> objs, ds;
             for (std::size_t i = 0; i < boxes.size(); ++i)
                 if (gt.objects[i].class_id == static_cast<int>(c) && proj[i].visible_in_front &&
-                    proj[i].truncation <= options.max_truncation && area(proj[i].bbox_trunc) > 0)
+                    proj[i].truncation <= options.max_truncation && camera::area(proj[i].bbox_trunc) > 0)
                     objs.push_back(i);
             for (std::size_t k = 0; k < dets.size(); ++k)
                 if (dets[k]->class_name == gt.class_names[c]) ds.push_back(k);
@@ -93,7 +112,7 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
                 for (std::size_t b = 0; b < ds.size(); ++b) {
                     const Detection2D& d = *dets[ds[b]];
                     cost(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-                        1.0 - iou2D(proj[objs[a]].bbox_trunc, ImageBox(d.x_min, d.y_min, d.x_max, d.y_max));
+                        1.0 - camera::iou2D(proj[objs[a]].bbox_trunc, camera::ImageBox(d.x_min, d.y_min, d.x_max, d.y_max));
                 }
             const std::vector<int> assignment = geometry::solveAssignment(cost);
             for (std::size_t a = 0; a < objs.size(); ++a)
@@ -106,7 +125,7 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
             const bool matched = match_of_object[i] >= 0;
             if (matched) used[static_cast<std::size_t>(match_of_object[i])] = 1;
             if (!matched && !(options.keep_unmatched && proj[i].visible_in_front && proj[i].truncation <= options.max_truncation &&
-                              area(proj[i].bbox_trunc) > 0))
+                              camera::area(proj[i].bbox_trunc) > 0))
                 continue;
             LabelAnnotation a;
             a.id = static_cast<std::int64_t>(out.annotations.size());

@@ -9,7 +9,7 @@ namespace simp::labels {
 
 namespace {
 
-nlohmann::ordered_json boxJson(const ImageBox& b) { return {b(0), b(1), b(2), b(3)}; }
+nlohmann::ordered_json boxJson(const camera::ImageBox& b) { return {b(0), b(1), b(2), b(3)}; }
 
 }  // namespace
 
@@ -20,8 +20,8 @@ void writeOmni3DLabels(const std::string& path, const LabelSet& labels, const st
                  {"url", ""}};
     oj ims = oj::array();
     for (const PosedImage& im : labels.images)
-        ims.push_back({{"id", im.id}, {"dataset_id", 0}, {"file_path", im.file_path}, {"width", im.width},
-                       {"height", im.height}, {"K", detail::toJson(im.K)}, {"src_90_rotate", 0}, {"src_flagged", false},
+        ims.push_back({{"id", im.id}, {"dataset_id", 0}, {"file_path", im.file_path}, {"width", im.camera.widthPx()},
+                       {"height", im.camera.heightPx()}, {"K", detail::toJson(im.camera.K())}, {"src_90_rotate", 0}, {"src_flagged", false},
                        {"timestamp", im.timestamp_s}});
     j["images"] = ims;
     oj cats = oj::array();

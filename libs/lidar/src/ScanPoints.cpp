@@ -1,3 +1,4 @@
+#include <simp/camera/FloorPlanThresholds.h>
 #include <simp/lidar/ScanPoints.h>
 
 #include <mrpt/poses/CPose2D.h>
@@ -29,11 +30,11 @@ mrpt::maps::CSimplePointsMap wallSurfacePoints(const mrpt::maps::COccupancyGridM
     mrpt::maps::CSimplePointsMap pts;
     const int nx = static_cast<int>(grid.getSizeX()), ny = static_cast<int>(grid.getSizeY());
     const auto is_free = [&](int cx, int cy) {
-        return cx >= 0 && cy >= 0 && cx < nx && cy < ny && grid.getCell(cx, cy) > 0.5f;
+        return cx >= 0 && cy >= 0 && cx < nx && cy < ny && grid.getCell(cx, cy) > camera::floorplan::kUnknownFree;
     };
     for (int cy = 0; cy < ny; ++cy)
         for (int cx = 0; cx < nx; ++cx) {
-            if (!(grid.getCell(cx, cy) < 0.5f)) continue;
+            if (!(grid.getCell(cx, cy) < camera::floorplan::kUnknownFree)) continue;
             if (is_free(cx - 1, cy) || is_free(cx + 1, cy) || is_free(cx, cy - 1) || is_free(cx, cy + 1))
                 pts.insertPoint(grid.idx2x(static_cast<std::size_t>(cx)), grid.idx2y(static_cast<std::size_t>(cy)), 0.0f);
         }

@@ -24,7 +24,7 @@ constexpr double kForbiddenCost = 2.0;
 ObjectMapBuilder::ObjectMapBuilder(const TOptions& options) : m_options(options) { m_options.validate(); }
 
 void ObjectMapBuilder::setFloorPlan(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::RoomMap& rooms) {
-    m_walls = WallGrid(floorplan);
+    m_walls = camera::FloorPlanGrid(floorplan);
     if (!rooms.empty()) {
         m_rooms = rooms;
     } else {
@@ -160,20 +160,17 @@ Eigen::Vector2d ObjectMapBuilder::classBiasOf(int class_id, const geometry::Box3
     return Eigen::Rotation2Dd(world::classNoiseFrameYaw(box)) * m_g.class_noise[c]->mean_m;
 }
 
-PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const {
-    PinholeCamera cam;
-    const mrpt::poses::CPose3D world_T_camera = robot_pose + obs.cameraPose();
-    cam.world_T_camera.linear() = world_T_camera.getRotationMatrix().asEigen();
-    cam.world_T_camera.translation() = Eigen::Vector3d(world_T_camera.x(), world_T_camera.y(), world_T_camera.z());
-    cam.width_px = static_cast<int>(obs.imageWidth());
-    cam.height_px = static_cast<int>(obs.imageHeight());
-    if (const auto& K = obs.intrinsics(); K.has_value()) {
-        cam.fx_px = K->fx(), cam.fy_px = K->fy(), cam.cx_px = K->cx(), cam.cy_px = K->cy();
-    } else {
-        cam.fx_px = m_options.default_fx_px, cam.fy_px = m_options.default_fy_px;
-        cam.cx_px = m_options.default_cx_px, cam.cy_px = m_options.default_cy_px;
-    }
-    return cam;
+camera::PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs,
+                                                 const mrpt::poses::CPose3D& robot_pose) const {
+    // The observation's image size with its intrinsics, or the configured default intrinsics.
+    const auto& K = obs.intrinsics();
+    return camera::PinholeCamera::onRobot(
+        robot_pose, obs.cameraPose(),
+        K.has_value() ? camera::makeIntrinsics(static_cast<int>(obs.imageWidth()), static_cast<int>(obs.imageHeight()),
+                                               K->fx(), K->fy(), K->cx(), K->cy())
+                      : camera::makeIntrinsics(static_cast<int>(obs.imageWidth()), static_cast<int>(obs.imageHeight()),
+                                               m_options.default_fx_px, m_options.default_fy_px,
+                                               m_options.default_cx_px, m_options.default_cy_px));
 }
 
 void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) {
@@ -197,7 +194,7 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
     m_window_room = current_room;
 
     // I_active of the map objects for this camera, accumulated over the window.
-    const PinholeCamera camera = cameraOf(obs, robot_pose);
+    const camera::PinholeCamera camera = cameraOf(obs, robot_pose);
     std::vector<bool> active, candidate;
     visibility(camera, current_room, active, candidate);
     for (std::size_t k = 0; k < m_g.objects.size(); ++k) {

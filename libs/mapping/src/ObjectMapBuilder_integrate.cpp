@@ -3,6 +3,7 @@
 #include <simp/geometry/Box3DIoU.h>
 #include <simp/geometry/Hungarian.h>
 #include <simp/mapping/AssociationCost.h>
+#include <simp/camera/Occluders.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 
 #include <algorithm>
@@ -40,19 +41,26 @@ void ObjectMapBuilder::updateGroups() {
     m_groups_valid = true;
 }
 
-void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
+void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int current_room, std::vector<bool>& active,
                                   std::vector<bool>& candidate) {
     const std::size_t n = m_g.objects.size();
     active.assign(n, false);
     candidate.assign(n, false);
     if (n == 0) return;
     m_boxes_scratch.resize(n);
-    for (std::size_t k = 0; k < n; ++k) m_boxes_scratch[k] = m_g.objects[k].box;
-    RenderParams prm;
+    m_occludes_scratch.resize(n);
+    const std::vector<char> class_occludes = camera::occludingClasses(m_g.class_names);
+    for (std::size_t k = 0; k < n; ++k) {
+        m_boxes_scratch[k] = m_g.objects[k].box;
+        const auto c = static_cast<std::size_t>(m_g.objects[k].class_id);
+        m_occludes_scratch[k] = c < class_occludes.size() ? class_occludes[c] : 1;  // doors hide nothing
+    }
+    camera::ZBufferParams prm;
     prm.downscale = m_options.zbuffer_downscale;
     prm.near_plane_m = m_options.near_plane_m;
     prm.wall_depth_margin_m = m_options.wall_depth_margin_m;
     prm.max_distance_m = m_options.wall_cast_max_m;
+    prm.occludes = &m_occludes_scratch;
     if (!m_options.intersecting_boxes_occlude) {
         if (!m_groups_valid || m_groups.size() != n) updateGroups();
         prm.group = &m_groups;
@@ -62,7 +70,7 @@ void ObjectMapBuilder::visibility(const PinholeCamera& camera, int current_room,
         const world::MapObject& o = m_g.objects[k];
         // Room policy: only objects of the robot's current room are updated (room 0 = unknown: any).
         if (current_room != 0 && o.room_id != 0 && o.room_id != current_room) continue;
-        const BoxView& v = m_views_scratch[k];
+        const camera::BoxView& v = m_views_scratch[k];
         // Candidate: in the frustum and not completely behind walls (other boxes may hide it:
         // nested boxes such as a sink in a counter are still detected).
         if (v.unwalled_px <= 0) continue;

@@ -16,7 +16,7 @@ Eigen::Vector2d axisDir(const geometry::Box3D& b, int axis) { return b.R.col(axi
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// The best qualifying contact on each box axis (smallest |gap|).
-std::optional<WallContact> bestOnAxis(const geometry::Box3D& box, int axis, const WallGrid& walls,
+std::optional<WallContact> bestOnAxis(const geometry::Box3D& box, int axis, const camera::FloorPlanGrid& walls,
                                       const WallAlignmentParams& p) {
     std::optional<WallContact> best;
     for (const int sign : {1, -1}) {
@@ -28,7 +28,7 @@ std::optional<WallContact> bestOnAxis(const geometry::Box3D& box, int axis, cons
 
 }  // namespace
 
-std::optional<WallContact> wallContact(const geometry::Box3D& box, int axis, int sign, const WallGrid& walls,
+std::optional<WallContact> wallContact(const geometry::Box3D& box, int axis, int sign, const camera::FloorPlanGrid& walls,
                                        const WallAlignmentParams& p) {
     if (walls.empty() || !isUpright(box) || p.rays_per_side < 2) return std::nullopt;
     const Eigen::Vector2d n = sign * axisDir(box, axis);
@@ -77,7 +77,7 @@ std::optional<WallContact> wallContact(const geometry::Box3D& box, int axis, int
     return c;
 }
 
-geometry::Box3D alignToWalls(const geometry::Box3D& box_in, const WallGrid& walls, const WallAlignmentParams& p) {
+geometry::Box3D alignToWalls(const geometry::Box3D& box_in, const camera::FloorPlanGrid& walls, const WallAlignmentParams& p) {
     if (walls.empty() || !isUpright(box_in)) return box_in;
     geometry::Box3D box = box_in;
 

@@ -12,7 +12,7 @@ float drawScore(double mean, double std, Rng& rng) {
     return static_cast<float>(std::clamp(rng.normal(mean, std), 0.01, 1.0));
 }
 
-std::optional<obs::Detection3D> finish(const CameraView& view, obs::Detection3D d) {
+std::optional<obs::Detection3D> finish(const camera::PinholeCamera& view, obs::Detection3D d) {
     obs::ImageBox2D b;
     double inside = 0;
     if (!projectBox(view, d.box_in_camera, b, inside)) return std::nullopt;
@@ -68,11 +68,11 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
     return out;
 }
 
-Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObject& o, const world::NoiseModel& noise,
+Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const world::NoiseModel& noise,
                                     const DetectorParams& p, std::uint64_t noise_seed, Rng& rng) {
     world::NoiseModel zero_mean = noise;
     zero_mean.mean_m.setZero();
-    const Eigen::Vector2d cam = view.T_world_camera.translation().head<2>();
+    const Eigen::Vector2d cam = view.world_T_camera.translation().head<2>();
     const Eigen::Vector2d ray = o.box.center.head<2>() - cam;
     const double dist = ray.norm();
     // persistent part: one draw per (sequence, object, viewpoint cell)
@@ -99,7 +99,7 @@ Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObje
     return R_o * noise.mean_m + dev;
 }
 
-std::optional<obs::Detection3D> detectObject(const CameraView& view, const world::MapObject& o,
+std::optional<obs::Detection3D> detectObject(const camera::PinholeCamera& view, const world::MapObject& o,
                                              const world::NoiseModel& noise, std::size_t num_classes,
                                              const DetectorParams& p, Rng& rng, std::uint64_t noise_seed) {
     if (!rng.bernoulli(p.detection_probability)) return std::nullopt;
@@ -121,11 +121,11 @@ std::optional<obs::Detection3D> detectObject(const CameraView& view, const world
     }
     if (d.confidence < p.min_confidence) return std::nullopt;
     const geometry::Box3D world_box = geometry::makeUprightBox({c_xy.x(), c_xy.y(), z}, size, yaw_det);
-    d.box_in_camera = worldBoxToCamera(world_box, view.T_world_camera.inverse());
+    d.box_in_camera = worldBoxToCamera(world_box, view.world_T_camera.inverse());
     return finish(view, d);
 }
 
-std::optional<obs::Detection3D> phantomDetection(const CameraView& view, const Raster& walls,
+std::optional<obs::Detection3D> phantomDetection(const camera::PinholeCamera& view, const Raster& walls,
                                                  const std::vector<std::string>& class_names,
                                                  const FalsePositiveParams& fp, const DetectorParams& p, Rng& rng) {
     if (class_names.empty()) return std::nullopt;
@@ -140,9 +140,9 @@ std::optional<obs::Detection3D> phantomDetection(const CameraView& view, const R
     } catch (const std::invalid_argument&) {
         // a class without a template (imported label set): a half-metre cube
     }
-    const double hfov = std::atan2(0.5 * view.width_px, view.fx);
-    const Eigen::Vector3d cam = view.T_world_camera.translation();
-    const Eigen::Vector3d axis = view.T_world_camera.linear().col(2);
+    const double hfov = std::atan2(0.5 * view.widthPx(), view.fx());
+    const Eigen::Vector3d cam = view.world_T_camera.translation();
+    const Eigen::Vector3d axis = view.world_T_camera.linear().col(2);
     const double cam_yaw = std::atan2(axis.y(), axis.x());
     for (int attempt = 0; attempt < 10; ++attempt) {
         const double range = rng.uniform(fp.range_min_m, fp.range_max_m);
@@ -155,7 +155,7 @@ std::optional<obs::Detection3D> phantomDetection(const CameraView& view, const R
         const double yaw = rng.uniform(-M_PI, M_PI);
         if (det.confidence < p.min_confidence) return std::nullopt;
         const auto box = geometry::makeUprightBox({c.x(), c.y(), z0 + h / 2}, {w, d, h}, yaw);
-        det.box_in_camera = worldBoxToCamera(box, view.T_world_camera.inverse());
+        det.box_in_camera = worldBoxToCamera(box, view.world_T_camera.inverse());
         return finish(view, det);
     }
     return std::nullopt;

@@ -1,3 +1,4 @@
+#include <simp/camera/FloorPlanThresholds.h>
 #include <simp/geometry/Footprint.h>
 #include <simp/sim/Raster.h>
 
@@ -16,7 +17,7 @@ Raster wallRaster(const mrpt::maps::COccupancyGridMap2D& grid) {
     r.resolution_m = grid.getResolution();
     r.blocked.assign(static_cast<std::size_t>(r.nx) * r.ny, 0);
     for (int cy = 0; cy < r.ny; ++cy)
-        for (int cx = 0; cx < r.nx; ++cx) r.set(cx, cy, grid.getCell(cx, cy) <= 0.5f);
+        for (int cx = 0; cx < r.nx; ++cx) r.set(cx, cy, grid.getCell(cx, cy) <= camera::floorplan::kUnknownFree);
     return r;
 }
 

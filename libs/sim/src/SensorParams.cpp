@@ -47,16 +47,15 @@ void CameraParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, cons
     mount_radius_m = cfg.read_double(s, "mount_radius_m", mount_radius_m);
     height_m = cfg.read_double(s, "height_m", height_m);
     pitch_down_deg = cfg.read_double(s, "pitch_down_deg", pitch_down_deg);
-    width_px = cfg.read_int(s, "width_px", width_px);
-    height_px = cfg.read_int(s, "height_px", height_px);
-    fx = cfg.read_double(s, "fx", fx);
-    fy = cfg.read_double(s, "fy", fy);
-    cx = cfg.read_double(s, "cx", cx);
-    cy = cfg.read_double(s, "cy", cy);
+    const int width_px = cfg.read_int(s, "width_px", static_cast<int>(intrinsics.ncols));
+    const int height_px = cfg.read_int(s, "height_px", static_cast<int>(intrinsics.nrows));
+    const double fx = cfg.read_double(s, "fx", intrinsics.fx()), fy = cfg.read_double(s, "fy", intrinsics.fy());
+    const double cx = cfg.read_double(s, "cx", intrinsics.cx()), cy = cfg.read_double(s, "cy", intrinsics.cy());
     rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
     check(count >= 1 && count <= 16, s, "count", "must be in [1, 16]");
     check(width_px > 0 && height_px > 0, s, "width_px/height_px", "must be > 0");
     check(fx > 0 && fy > 0, s, "fx/fy", "must be > 0");
+    intrinsics = camera::makeIntrinsics(width_px, height_px, fx, fy, cx, cy);
     check(rate_hz > 0 && std::isfinite(rate_hz), s, "rate_hz", "must be > 0");
     check(std::isfinite(height_m) && std::isfinite(mount_radius_m), s, "height_m/mount_radius_m", "must be finite");
 }

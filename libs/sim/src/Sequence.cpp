@@ -123,10 +123,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
         robot_T_camera.push_back(obs::cameraPoseOnRobot(cam.mount_radius_m * std::cos(yaw), cam.mount_radius_m * std::sin(yaw),
                                                         cam.height_m, yaw, cam.pitch_down_deg * M_PI / 180.0));
     }
-    mrpt::img::TCamera K;
-    K.ncols = static_cast<std::uint32_t>(cam.width_px);
-    K.nrows = static_cast<std::uint32_t>(cam.height_px);
-    K.setIntrinsicParamsFromValues(cam.fx, cam.fy, cam.cx, cam.cy);
+    mrpt::img::TCamera K = cam.intrinsics;  // written into every observation
     K.cameraName = "simp-sim";
     const int camera_every = std::max(1, static_cast<int>(std::lround(params.odometry.rate_hz / cam.rate_hz)));
     world::NoiseModel person_noise;
@@ -161,7 +158,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
             scene.resize(n_static);
             for (std::size_t i = 0; i < people.size(); ++i) scene.push_back(personBox(people[i][k], person_size[i], person_class));
             for (int c = 0; c < cam.count; ++c) {
-                const CameraView view = makeCameraView(traj[k].pose, robot_T_camera[static_cast<std::size_t>(c)], cam);
+                const camera::PinholeCamera view = camera::PinholeCamera::onRobot(traj[k].pose, robot_T_camera[static_cast<std::size_t>(c)], cam.intrinsics);
                 auto ob = std::make_shared<obs::CObservationObjects3D>();
                 ob->sensorLabel = "CAMERA_" + std::to_string(c);
                 ob->timestamp = mrpt::Clock::fromDouble(t);

@@ -1,3 +1,4 @@
+#include <simp/camera/Occluders.h>
 #include <simp/geometry/Footprint.h>
 #include <simp/obs/ObjectClasses.h>
 #include <simp/sim/Visibility.h>
@@ -9,6 +10,8 @@ namespace simp::sim {
 namespace {
 
 constexpr double kMinDepth_m = 0.05;  ///< corners closer to the image plane are "behind"
+/// A door stands in its wall gap: its rays ignore walls this much farther from its footprint (m).
+constexpr double kSeeThroughExtraSelfMargin_m = 0.1;
 
 bool insideConvex(const geometry::ConvexPolygon& poly, const Eigen::Vector2d& q) {
     if (poly.n < 3) return false;
@@ -35,7 +38,7 @@ struct Candidate {
     geometry::Box3D box_in_camera;
     obs::ImageBox2D box_2d;
     double depth_m, inside_fraction;
-    bool is_door;
+    bool see_through;  ///< seen through its gap, hides nothing (a door)
     bool wall_visible = false;
 };
 
@@ -57,28 +60,7 @@ double coveredFraction(const obs::ImageBox2D& a, const std::vector<const obs::Im
 
 }  // namespace
 
-Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& p) {
-    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = p.getRotationMatrix().asEigen();
-    T.translation() = Eigen::Vector3d(p.x(), p.y(), p.z());
-    return T;
-}
-
-CameraView makeCameraView(const mrpt::math::TPose2D& world_T_robot, const mrpt::poses::CPose3D& robot_T_camera,
-                          const CameraParams& p) {
-    CameraView v;
-    const mrpt::poses::CPose3D robot(world_T_robot.x, world_T_robot.y, 0.0, world_T_robot.phi, 0.0, 0.0);
-    v.T_world_camera = toIsometry(robot + robot_T_camera);
-    v.fx = p.fx;
-    v.fy = p.fy;
-    v.cx = p.cx;
-    v.cy = p.cy;
-    v.width_px = p.width_px;
-    v.height_px = p.height_px;
-    return v;
-}
-
-bool projectBox(const CameraView& view, const geometry::Box3D& box_in_camera, obs::ImageBox2D& box_2d,
+bool projectBox(const camera::PinholeCamera& view, const geometry::Box3D& box_in_camera, obs::ImageBox2D& box_2d,
                 double& inside_fraction) {
     int in_front = 0, inside = 0;
     double u0 = 1e18, v0 = 1e18, u1 = -1e18, v1 = -1e18;
@@ -94,15 +76,15 @@ bool projectBox(const CameraView& view, const geometry::Box3D& box_in_camera, ob
     }
     inside_fraction = inside / 8.0;
     if (in_front == 0) return false;
-    const auto clampU = [&](double u) { return static_cast<float>(std::clamp(u, 0.0, static_cast<double>(view.width_px))); };
-    const auto clampV = [&](double v) { return static_cast<float>(std::clamp(v, 0.0, static_cast<double>(view.height_px))); };
+    const auto clampU = [&](double u) { return static_cast<float>(std::clamp(u, 0.0, static_cast<double>(view.widthPx()))); };
+    const auto clampV = [&](double v) { return static_cast<float>(std::clamp(v, 0.0, static_cast<double>(view.heightPx()))); };
     box_2d = {clampU(u0), clampV(v0), clampU(u1), clampV(v1)};
     return box_2d.x_max > box_2d.x_min && box_2d.y_max > box_2d.y_min;
 }
 
-bool visibleThroughWalls(const CameraView& view, const world::MapObject& object, const Raster& walls,
+bool visibleThroughWalls(const camera::PinholeCamera& view, const world::MapObject& object, const Raster& walls,
                          const VisibilityParams& p, double extra_self_margin_m) {
-    const Eigen::Vector2d cam = view.T_world_camera.translation().head<2>();
+    const Eigen::Vector2d cam = view.world_T_camera.translation().head<2>();
     const double yaw = geometry::yawOf(object.box);
     const double margin = p.self_margin_m + extra_self_margin_m;
     const auto self = geometry::makeRectangle(object.box.center.head<2>(), object.box.size.x() + 2 * margin,
@@ -128,11 +110,11 @@ bool visibleThroughWalls(const CameraView& view, const world::MapObject& object,
     return clear >= p.min_visible_ray_fraction * static_cast<double>(targets.size()) && clear > 0;
 }
 
-std::vector<VisibleObject> visibleObjects(const CameraView& view, const std::vector<world::MapObject>& objects,
+std::vector<VisibleObject> visibleObjects(const camera::PinholeCamera& view, const std::vector<world::MapObject>& objects,
                                           const std::vector<std::string>& class_names, const Raster& walls,
                                           const VisibilityParams& p) {
-    const Eigen::Isometry3d T_camera_world = view.T_world_camera.inverse();
-    const Eigen::Vector2d cam = view.T_world_camera.translation().head<2>();
+    const Eigen::Isometry3d T_camera_world = view.world_T_camera.inverse();
+    const Eigen::Vector2d cam = view.world_T_camera.translation().head<2>();
     double global_max = p.default_max_range_m;
     for (double m : p.max_range_m) global_max = std::max(global_max, m);
     std::vector<Candidate> in_view;
@@ -141,11 +123,11 @@ std::vector<VisibleObject> visibleObjects(const CameraView& view, const std::vec
         const std::string& name =
             o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < class_names.size() ? class_names[static_cast<std::size_t>(o.class_id)] : "";
         if ((o.box.center.head<2>() - cam).norm() > global_max) continue;  // neither seen nor occluding
-        Candidate c{i, o.box.transformed(T_camera_world), {}, 0, 0, name == "door"};
+        Candidate c{i, o.box.transformed(T_camera_world), {}, 0, 0, !camera::occludes(name)};
         c.depth_m = c.box_in_camera.center.z();
         if (c.depth_m < kMinDepth_m) continue;
         if (!projectBox(view, c.box_in_camera, c.box_2d, c.inside_fraction)) continue;
-        c.wall_visible = visibleThroughWalls(view, o, walls, p, c.is_door ? 0.1 : 0.0);
+        c.wall_visible = visibleThroughWalls(view, o, walls, p, c.see_through ? kSeeThroughExtraSelfMargin_m : 0.0);
         if (c.wall_visible) in_view.push_back(c);  // objects behind walls neither show nor occlude
     }
     std::vector<VisibleObject> out;
@@ -158,7 +140,7 @@ std::vector<VisibleObject> visibleObjects(const CameraView& view, const std::vec
         if (c.inside_fraction < p.min_inside_fraction) continue;
         std::vector<const obs::ImageBox2D*> nearer;
         for (const auto& d : in_view)
-            if (d.index != c.index && !d.is_door && d.depth_m < c.depth_m) nearer.push_back(&d.box_2d);
+            if (d.index != c.index && !d.see_through && d.depth_m < c.depth_m) nearer.push_back(&d.box_2d);
         const double occluded = coveredFraction(c.box_2d, nearer);
         if (occluded > p.max_occluded_fraction) continue;
         out.push_back({c.index, c.box_2d, c.depth_m, c.inside_fraction, occluded});

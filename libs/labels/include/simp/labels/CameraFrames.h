@@ -12,7 +12,7 @@
 /// position_m / rotation: the pose is then world_T_robot(timestamp) (+) robot_T_camera and K the
 /// camera's, from robot poses (TUM, interpolated) and a camera rig file (CameraRig.h).
 
-#include <Eigen/Geometry>
+#include <simp/camera/PinholeCamera.h>
 #include <simp/io/Tum.h>
 #include <simp/labels/CameraRig.h>
 
@@ -26,9 +26,7 @@ struct PosedImage {
     std::int64_t id = 0;            ///< image id (unique)
     std::string file_path;          ///< as given; written to the Omni3D "file_path"
     double timestamp_s = 0;         ///< optional time (s)
-    int width = 640, height = 480;  ///< image size (px)
-    Eigen::Matrix3d K{Eigen::Matrix3d::Identity()};          ///< intrinsics (px)
-    Eigen::Isometry3d world_T_camera{Eigen::Isometry3d::Identity()};  ///< optical frame in the world
+    camera::PinholeCamera camera;   ///< K (skew allowed), image size and the optical frame in the world
 };
 
 /// \throw std::runtime_error naming the file and key (missing file/key, non-number, bad K,

@@ -7,9 +7,10 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
-#include <simp/labels/BoxProjection.h>
+#include <simp/camera/BoxProjection.h>
+#include <simp/camera/FloorPlanThresholds.h>
+#include <simp/labels/CameraFrames.h>
 #include <simp/labels/Detections2D.h>
-#include <simp/labels/Visibility.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <optional>
@@ -18,6 +19,16 @@
 #include <vector>
 
 namespace simp::labels {
+
+/// Visibility settings (camera::rayCastVisibility() on the floor plan's walls; doors hide nothing,
+/// camera/Occluders.h).
+struct VisibilityOptions {
+    int pixel_step = 4;                  ///< one ray every pixel_step px in u and v
+    double occupied_threshold = 1.0 - camera::floorplan::kWallMaxFree;  ///< cells with occupancy (1 - P(free)) >= this are walls
+    bool ignore_object_cells = true;     ///< cells under an object's footprint (+ margin) are not walls
+    double object_cell_margin_m = 0.10;  ///< margin around the footprint for ignore_object_cells (m)
+    double max_range_m = 30.0;           ///< rays stop here
+};
 
 /// Settings, section [simp-labels] of an .ini (key = field name; visibility keys prefixed "visibility_").
 struct LabelOptions {
@@ -44,7 +55,7 @@ struct LabelAnnotation {
     int category_id = 0;                   ///< index into the world's classes
     std::int64_t object_id = 0;            ///< world object id
     geometry::Box3D box_cam;               ///< boxInCameraOmni3D()
-    ProjectedBox projection;               ///< bbox2D_proj, bbox2D_trunc, truncation
+    camera::ProjectedBox projection;       ///< bbox2D_proj, bbox2D_trunc, truncation
     std::optional<Detection2D> detection;  ///< the matched 2D detection (bbox2D_tight)
     double visibility = 0;
 };

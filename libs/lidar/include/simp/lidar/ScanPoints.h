@@ -15,7 +15,7 @@ namespace simp::lidar {
 mrpt::maps::CSimplePointsMap scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t decimation,
                                           double max_range_m);
 
-/// Centres (m) of the occupied cells of `grid` (free probability < 0.5) that touch a free cell (free
+/// Centres (m) of the occupied cells of `grid` (free probability < 0.5, camera::floorplan::kUnknownFree) that touch a free cell (free
 /// probability > 0.5): the wall surfaces a scan can hit.
 mrpt::maps::CSimplePointsMap wallSurfacePoints(const mrpt::maps::COccupancyGridMap2D& grid);
 

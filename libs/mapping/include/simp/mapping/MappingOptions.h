@@ -138,7 +138,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double wall_depth_margin_m = 0.3;    ///< a box pixel up to this far behind the first wall cell counts as visible (m)
     double wall_cast_max_m = 12.0;       ///< walls farther than this do not occlude (m)
     double near_plane_m = 0.05;          ///< camera near clipping plane (m)
-    double default_fx_px = 380.07;       ///< intrinsics used when an observation has none (authors' K, 640x480)
+    double default_fx_px = 380.07;       ///< intrinsics used when an observation has none (camera::defaultIntrinsics())
     double default_fy_px = 379.66;
     double default_cx_px = 324.47;
     double default_cy_px = 237.79;

@@ -7,8 +7,8 @@
 
 #include <mrpt/poses/CPose3D.h>
 #include <simp/mapping/MappingOptions.h>
-#include <simp/mapping/Visibility.h>
-#include <simp/mapping/WallGrid.h>
+#include <simp/camera/FloorPlanGrid.h>
+#include <simp/camera/ZBufferVisibility.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/ObjectMapData.h>
 #include <simp/world/World.h>
@@ -103,19 +103,19 @@ class ObjectMapBuilder {
     int roomOf(double x_m, double y_m) const;
 
     /// Whether the floor-plan prior applies: wall_align on, or auto and the floor plan draws no
-    /// furniture (WallGrid::enclosedUnknownArea_m2() <= wall_align_max_enclosed_unknown_m2).
+    /// furniture (camera::FloorPlanGrid::enclosedUnknownArea_m2() <= wall_align_max_enclosed_unknown_m2).
     bool wallAlignmentActive() const;
     /// The floor plan draws walls only, no furniture (enclosed unknown area <=
     /// wall_align_max_enclosed_unknown_m2); false without a floor plan.
     bool planDrawsOnlyWalls() const;
     /// The camera of an observation in the world (intrinsics of the observation, else the defaults).
-    PinholeCamera cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const;
+    camera::PinholeCamera cameraOf(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) const;
 
     /// Visibility of the map objects in one camera (exposed for tests): per map object, true
     /// when active (I_active = 1: in the frustum and range, not truncated, not occluded, in the
     /// current room) and true when an association candidate (in the current room, some projected
     /// pixel in the image and not behind a wall; other boxes may hide it).
-    void visibility(const PinholeCamera& camera, int current_room, std::vector<bool>& active,
+    void visibility(const camera::PinholeCamera& camera, int current_room, std::vector<bool>& active,
                     std::vector<bool>& candidate);
 
    private:
@@ -165,11 +165,12 @@ class ObjectMapBuilder {
     geometry::Box3D shownBox(int class_id, const geometry::Box3D& estimate) const;
     void setEstimate(world::MapObject& o, const geometry::Box3D& estimate);
 
-    WallGrid m_walls;
+    camera::FloorPlanGrid m_walls;
     world::RoomMap m_rooms;
-    VisibilityRenderer m_renderer;
+    camera::ZBufferRenderer m_renderer;
     std::vector<geometry::Box3D> m_boxes_scratch;
-    std::vector<BoxView> m_views_scratch;
+    std::vector<char> m_occludes_scratch;  ///< per object: 0 for doors (camera/Occluders.h)
+    std::vector<camera::BoxView> m_views_scratch;
     /// Per map object: id of its group of mutually intersecting boxes (they do not occlude each
     /// other in I_active); recomputed after the map changed.
     std::vector<int> m_groups;

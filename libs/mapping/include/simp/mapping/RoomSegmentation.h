@@ -5,6 +5,7 @@
 /// remaining components are the room seeds, and their labels grow back over the free space.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <simp/camera/FloorPlanThresholds.h>
 #include <simp/world/World.h>
 
 namespace simp::mapping {
@@ -12,7 +13,7 @@ namespace simp::mapping {
 struct RoomSegmentationParams {
     double door_width_m = 1.0;        ///< openings up to this width separate rooms (m)
     double min_room_area_m2 = 1.0;    ///< eroded components smaller than this are dropped (m^2)
-    double min_free_prob = 0.65;      ///< a cell is free when MRPT getCell() >= this (1 = free)
+    double min_free_prob = camera::floorplan::kFreeMinFree;  ///< a cell is free when MRPT getCell() >= this (1 = free)
 };
 
 /// Room ids 1..N (0 = wall / unknown / unreachable) aligned with `grid`: same size, resolution

@@ -8,7 +8,7 @@
 /// turned parallel to the wall and moved so that side touches the wall's face.
 
 #include <simp/geometry/Box3D.h>
-#include <simp/mapping/WallGrid.h>
+#include <simp/camera/FloorPlanGrid.h>
 
 #include <optional>
 
@@ -35,13 +35,13 @@ struct WallContact {
 /// The wall facing one side of an upright box, when the side qualifies (enough rays hit within
 /// the gap / penetration limits, the face is straight and close to parallel); rays are cast from
 /// points inside the box along the side's outward normal.
-std::optional<WallContact> wallContact(const geometry::Box3D& upright_box, int axis, int sign, const WallGrid& walls,
+std::optional<WallContact> wallContact(const geometry::Box3D& upright_box, int axis, int sign, const camera::FloorPlanGrid& walls,
                                        const WallAlignmentParams& p);
 
 /// The box aligned to the nearest qualifying wall: turned parallel to it, moved so the side
 /// touches its face; a second wall on the other axis (a corner) moves it along that axis too.
 /// Returns the box unchanged when no side qualifies (or `walls` is empty). Height, size and
 /// vertical position are kept.
-geometry::Box3D alignToWalls(const geometry::Box3D& upright_box, const WallGrid& walls, const WallAlignmentParams& p);
+geometry::Box3D alignToWalls(const geometry::Box3D& upright_box, const camera::FloorPlanGrid& walls, const WallAlignmentParams& p);
 
 }  // namespace simp::mapping

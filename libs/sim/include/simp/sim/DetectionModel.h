@@ -45,19 +45,19 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
 /// deviation's component along the horizontal viewing ray is scaled by distance /
 /// reference_distance_m (depth error of a monocular detector). At the reference distance the
 /// offset has the model's mean and covariance (offsetCovariance()).
-Eigen::Vector2d centreOffsetInWorld(const CameraView& view, const world::MapObject& o, const world::NoiseModel& noise,
+Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const world::NoiseModel& noise,
                                     const DetectorParams& p, std::uint64_t noise_seed, Rng& rng);
 
 /// A detection of object `o` (true class `class_id` of `num_classes`): with probability
 /// detection_probability; centre = c_o + centreOffsetInWorld(), height, size and yaw perturbed;
 /// sometimes a wrong label. nullopt when missed or scored below min_confidence.
-std::optional<obs::Detection3D> detectObject(const CameraView& view, const world::MapObject& o,
+std::optional<obs::Detection3D> detectObject(const camera::PinholeCamera& view, const world::MapObject& o,
                                              const world::NoiseModel& noise, std::size_t num_classes,
                                              const DetectorParams& p, Rng& rng, std::uint64_t noise_seed = 0);
 
 /// A phantom box of a random class at a random free spot in the camera's view (line of sight
 /// through `walls`), scored like a false detection; nullopt when no spot was found quickly.
-std::optional<obs::Detection3D> phantomDetection(const CameraView& view, const Raster& walls,
+std::optional<obs::Detection3D> phantomDetection(const camera::PinholeCamera& view, const Raster& walls,
                                                  const std::vector<std::string>& class_names,
                                                  const FalsePositiveParams& fp, const DetectorParams& p, Rng& rng);
 

@@ -30,8 +30,8 @@ struct Raster {
     bool isBlockedAt(double x_m, double y_m) const { return isBlocked(cellX(x_m), cellY(y_m)); }
 };
 
-/// Walls of a floor plan: cells whose free probability is below 0.5 (occupied) or exactly
-/// unknown (0.5) are blocked.
+/// Walls of a floor plan for driving and the simulator's wall rays: every cell not known free
+/// (P(free) <= camera::floorplan::kUnknownFree: walls and unknown space) is blocked.
 Raster wallRaster(const mrpt::maps::COccupancyGridMap2D& grid);
 
 /// Marks the ground footprints of `objects` blocked (cells whose centre lies inside).

@@ -4,6 +4,7 @@
 /// [visibility], [detector], [false_positives] of sim.ini; doc/simulator.md lists every key).
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/camera/PinholeCamera.h>
 
 #include <string>
 #include <vector>
@@ -17,8 +18,8 @@ struct CameraParams {
     double mount_radius_m = 0.1;    ///< distance of each camera from the robot centre along its yaw (m)
     double height_m = 0.63;         ///< camera height above the floor (m)
     double pitch_down_deg = 0;      ///< downward tilt (deg)
-    int width_px = 640, height_px = 480;
-    double fx = 380.07, fy = 379.66, cx = 324.47, cy = 237.79;  ///< intrinsics (px)
+    /// Keys width_px, height_px, fx, fy, cx, cy (px); default camera::defaultIntrinsics().
+    mrpt::img::TCamera intrinsics = camera::defaultIntrinsics();
     double rate_hz = 5;             ///< frame rate (Hz); a divisor of the odometry rate is best
 
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);

@@ -1,21 +1,30 @@
 #pragma once
-/// \file WallGrid.h
-/// The walls of a floor plan as a binary grid, with 2D ray casting: the occluders of
-/// the visibility test (walls extruded vertically without limit).
+/// \file FloorPlanGrid.h
+/// The one view of a floor plan as walls / free / outside cells (thresholds: FloorPlanThresholds.h),
+/// with 2D ray casting: the occluders of every visibility strategy (walls extruded vertically
+/// without limit), the contacts of wall alignment, the free floor of the mapper's tests.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <simp/camera/FloorPlanThresholds.h>
+#include <simp/geometry/Box3D.h>
 #include <opencv2/core.hpp>
 
 #include <Eigen/Core>
+#include <vector>
 
-namespace simp::mapping {
+namespace simp::camera {
 
-class WallGrid {
+class FloorPlanGrid {
    public:
-    WallGrid() = default;
+    FloorPlanGrid() = default;
     /// Cells with free-probability < max_free_prob_of_wall (MRPT getCell(), 0 = occupied) are walls;
-    /// unknown cells (0.5) do not block with the default 0.35.
-    explicit WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall = 0.35);
+    /// unknown cells (0.5) do not block with the default floorplan::kWallMaxFree.
+    explicit FloorPlanGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall = floorplan::kWallMaxFree);
+
+    /// Clears the wall cells whose centre lies in a box's footprint grown by `margin_m` on every side
+    /// (at the box's centre height). A ground-truth floor plan that draws furniture outlines would
+    /// otherwise hide every object behind its own footprint (labels' visibility_ignore_object_cells).
+    void clearWallsUnder(const std::vector<geometry::Box3D>& boxes, double margin_m);
 
     bool empty() const { return m_wall.empty(); }
     /// True when the world point (m) falls in a wall cell (false outside the grid).
@@ -50,4 +59,4 @@ class WallGrid {
     double m_x_min = 0, m_y_min = 0, m_res = 0.05;
 };
 
-}  // namespace simp::mapping
+}  // namespace simp::camera

@@ -1,14 +1,16 @@
-#include <simp/mapping/WallGrid.h>
+#include <simp/camera/FloorPlanGrid.h>
+#include <simp/geometry/Footprint.h>
 
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-namespace simp::mapping {
+namespace simp::camera {
 
-WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall)
+FloorPlanGrid::FloorPlanGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_prob_of_wall)
     : m_x_min(grid.getXMin()), m_y_min(grid.getYMin()), m_res(grid.getResolution()) {
     const int nx = static_cast<int>(grid.getSizeX()), ny = static_cast<int>(grid.getSizeY());
     m_wall = cv::Mat1b::zeros(ny, nx);
@@ -37,7 +39,23 @@ WallGrid::WallGrid(const mrpt::maps::COccupancyGridMap2D& grid, double max_free_
     m_enclosed_unknown_m2 = cv::countNonZero(unknown & ~m_outside) * m_res * m_res;
 }
 
-bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool beyond_grid) const {
+void FloorPlanGrid::clearWallsUnder(const std::vector<geometry::Box3D>& boxes, double margin_m) {
+    if (m_wall.empty()) return;
+    const int m = static_cast<int>(std::ceil(margin_m / m_res)) + 1;
+    const auto cellOf = [&](double v, double v_min) { return static_cast<int>(std::floor((v - v_min) / m_res)); };
+    for (const auto& b : boxes) {
+        Eigen::Vector2d lo, hi;
+        geometry::footprint(b).bounds(lo, hi);
+        geometry::Box3D grown = b;  // the box grown by the margin on every side
+        grown.size += Eigen::Vector3d::Constant(2.0 * margin_m);
+        for (int cy = std::max(0, cellOf(lo.y(), m_y_min) - m); cy <= std::min(m_wall.rows - 1, cellOf(hi.y(), m_y_min) + m); ++cy)
+            for (int cx = std::max(0, cellOf(lo.x(), m_x_min) - m); cx <= std::min(m_wall.cols - 1, cellOf(hi.x(), m_x_min) + m); ++cx)
+                if (geometry::containsPoint(grown, Eigen::Vector3d(m_x_min + (cx + 0.5) * m_res, m_y_min + (cy + 0.5) * m_res, b.center.z())))
+                    m_wall(cy, cx) = 0;
+    }
+}
+
+bool FloorPlanGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool beyond_grid) const {
     if (cells.empty()) return false;
     const int cx = static_cast<int>(std::floor((x_m - m_x_min) / m_res));
     const int cy = static_cast<int>(std::floor((y_m - m_y_min) / m_res));
@@ -45,13 +63,13 @@ bool WallGrid::cellIsSet(const cv::Mat1b& cells, double x_m, double y_m, bool be
     return cells(cy, cx) != 0;
 }
 
-bool WallGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m, false); }
+bool FloorPlanGrid::isWall(double x_m, double y_m) const { return cellIsSet(m_wall, x_m, y_m, false); }
 
-bool WallGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m, false); }
+bool FloorPlanGrid::isFree(double x_m, double y_m) const { return cellIsSet(m_free, x_m, y_m, false); }
 
-bool WallGrid::isOutside(double x_m, double y_m) const { return cellIsSet(m_outside, x_m, y_m, true); }
+bool FloorPlanGrid::isOutside(double x_m, double y_m) const { return cellIsSet(m_outside, x_m, y_m, true); }
 
-double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
+double FloorPlanGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d& dir_in, double max_dist_m) const {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const double len = dir_in.norm();
     if (m_wall.empty() || !(len > 0) || !origin_m.allFinite()) return kInf;
@@ -89,4 +107,4 @@ double WallGrid::castRay(const Eigen::Vector2d& origin_m, const Eigen::Vector2d&
     return kInf;
 }
 
-}  // namespace simp::mapping
+}  // namespace simp::camera

@@ -1,11 +1,11 @@
-#include <simp/mapping/Visibility.h>
+#include <simp/camera/ZBufferVisibility.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-namespace simp::mapping {
+namespace simp::camera {
 namespace {
 
 // Box faces as corner indices (Box3D numbering: bit0 = x, bit1 = y, bit2 = z sign).
@@ -29,7 +29,7 @@ int clipNear(const Eigen::Vector3d* in, int n, double near, Eigen::Vector3d* out
 
 }  // namespace
 
-void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int object) {
+void ZBufferRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int object) {
     // Fan triangulation; p[i] = (u, v, 1/z) in z-buffer pixel units.
     for (int t = 1; t + 1 < n; ++t) {
         const Eigen::Vector3d& a = p[0];
@@ -58,6 +58,10 @@ void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int o
                 if (m_pass == 1) {  // visibility against the final z-buffer, own group transparent
                     if (m_stamp_visible[idx] == object) continue;
                     m_stamp_visible[idx] = object;
+                    if (seeThrough(object)) {  // in front of every occluder and wall
+                        if (z < m_depth[idx]) ++(*m_out)[object].visible_px;
+                        continue;
+                    }
                     const int front = m_id[idx];
                     const int g = (*m_group)[static_cast<std::size_t>(object)];
                     if (front == object || (front >= 0 && g >= 0 && (*m_group)[static_cast<std::size_t>(front)] == g))
@@ -72,7 +76,7 @@ void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int o
                     m_stamp_unwalled[idx] = object;
                     ++(*m_out)[object].unwalled_px;
                 }
-                if (z < m_depth[idx]) {
+                if (z < m_depth[idx] && !seeThrough(object)) {
                     m_depth[idx] = z;
                     m_id[idx] = object;
                 }
@@ -81,11 +85,11 @@ void VisibilityRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int o
     }
 }
 
-void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geometry::Box3D>& boxes,
-                                const WallGrid* walls, const RenderParams& prm, std::vector<BoxView>& out) {
+void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometry::Box3D>& boxes,
+                             const FloorPlanGrid* walls, const ZBufferParams& prm, std::vector<BoxView>& out) {
     const int ds = std::max(1, prm.downscale);
-    m_w = (cam.width_px + ds - 1) / ds;
-    m_h = (cam.height_px + ds - 1) / ds;
+    m_w = (cam.widthPx() + ds - 1) / ds;
+    m_h = (cam.heightPx() + ds - 1) / ds;
     const std::size_t npx = static_cast<std::size_t>(m_w) * m_h;
     m_depth.assign(npx, std::numeric_limits<float>::infinity());
     m_id.assign(npx, -1);
@@ -102,14 +106,14 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
     // ray at the principal row; per pixel the camera depth at that horizontal distance.
     if (walls != nullptr && !walls->empty()) {
         for (int x = 0; x < m_w; ++x) {
-            const double xn = ((x + 0.5) * ds - cam.cx_px) / cam.fx_px;
+            const double xn = ((x + 0.5) * ds - cam.cx()) / cam.fx();
             const Eigen::Vector3d d_col = R_wc * Eigen::Vector3d(xn, 0.0, 1.0);
             const Eigen::Vector2d h_col = d_col.head<2>();
             if (h_col.norm() < 1e-9) continue;
             const double r = walls->castRay(t_wc.head<2>(), h_col, prm.max_distance_m);
             if (!std::isfinite(r)) continue;
             for (int y = 0; y < m_h; ++y) {
-                const double yn = ((y + 0.5) * ds - cam.cy_px) / cam.fy_px;
+                const double yn = ((y + 0.5) * ds - cam.cy()) / cam.fy();
                 const Eigen::Vector3d d = R_wc * Eigen::Vector3d(xn, yn, 1.0);  // camera depth z = 1
                 const double h = d.head<2>().norm();
                 if (h < 1e-9) continue;
@@ -123,10 +127,14 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
     std::array<Eigen::Vector3d, 8> c_cam;
     std::array<Eigen::Vector3d, 8> face_in, face_clip, face_px;
     m_group = prm.group != nullptr && prm.group->size() == boxes.size() ? prm.group : nullptr;
-    if (m_group != nullptr) m_stamp_visible.assign(npx, -1);
-    const int n_pass = m_group != nullptr ? 2 : 1;
+    m_occludes = prm.occludes != nullptr && prm.occludes->size() == boxes.size() ? prm.occludes : nullptr;
+    bool any_see_through = false;
+    for (std::size_t k = 0; k < boxes.size() && !any_see_through; ++k) any_see_through = seeThrough(static_cast<int>(k));
+    const int n_pass = m_group != nullptr || any_see_through ? 2 : 1;
+    if (n_pass == 2) m_stamp_visible.assign(npx, -1);
     for (m_pass = 0; m_pass < n_pass; ++m_pass)
     for (std::size_t k = 0; k < boxes.size(); ++k) {
+        if (m_pass == 1 && m_group == nullptr && !seeThrough(static_cast<int>(k))) continue;  // counted from m_id
         const geometry::Box3D& box = boxes[k];
         BoxView& view = out[k];
         view.distance_m = (box.center - t_wc).norm();
@@ -144,8 +152,8 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
             const int n = clipNear(face_in.data(), 4, prm.near_plane_m, face_clip.data());
             for (int i = 0; i < n; ++i) {
                 const Eigen::Vector3d& q = face_clip[i];
-                const double u = cam.fx_px * q.x() / q.z() + cam.cx_px;
-                const double v = cam.fy_px * q.y() / q.z() + cam.cy_px;
+                const double u = cam.fx() * q.x() / q.z() + cam.cx();
+                const double v = cam.fy() * q.y() / q.z() + cam.cy();
                 u_min = std::min(u_min, u), u_max = std::max(u_max, u);
                 v_min = std::min(v_min, v), v_max = std::max(v_max, v);
                 face_px[i] = Eigen::Vector3d(u / ds, v / ds, 1.0 / q.z());
@@ -154,8 +162,8 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
         }
         // Truncation: fraction of the projected 2D bounding box outside the image.
         const double area = (u_max - u_min) * (v_max - v_min);
-        const double iw = std::max(0.0, std::min(u_max, double(cam.width_px)) - std::max(u_min, 0.0));
-        const double ih = std::max(0.0, std::min(v_max, double(cam.height_px)) - std::max(v_min, 0.0));
+        const double iw = std::max(0.0, std::min(u_max, double(cam.widthPx())) - std::max(u_min, 0.0));
+        const double ih = std::max(0.0, std::min(v_max, double(cam.heightPx())) - std::max(v_min, 0.0));
         view.truncated_fraction = area > 0 ? std::clamp(1.0 - iw * ih / area, 0.0, 1.0) : 1.0;
     }
     if (m_group == nullptr)
@@ -163,6 +171,7 @@ void VisibilityRenderer::render(const PinholeCamera& cam, const std::vector<geom
             if (m_id[i] >= 0) ++out[m_id[i]].visible_px;
     m_pass = 0;
     m_out = nullptr;
+    m_occludes = nullptr;
 }
 
-}  // namespace simp::mapping
+}  // namespace simp::camera

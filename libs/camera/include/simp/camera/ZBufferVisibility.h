@@ -1,24 +1,19 @@
 #pragma once
-/// \file Visibility.h
-/// Which map objects a camera sees (the I_active state of Eq. objdef): the map's boxes are
-/// rendered into a small z-buffer of the camera (depth test), walls of the floor plan are
-/// ray cast per image column and block what lies behind them, and the projected box's
-/// fraction outside the image measures truncation.
+/// \file ZBufferVisibility.h
+/// Visibility strategy of the mapper (the I_active state of Eq. objdef), fast enough for every
+/// frame: the boxes are rendered into a reduced-resolution z-buffer of the camera (depth test),
+/// walls of the floor plan are ray cast once per z-buffer column and block what lies behind them,
+/// and the projected box's fraction outside the image measures truncation.
+/// (The other strategies: RayCastVisibility.h, exact per image pixel for labels; the simulator's
+/// 2D-box depth test in sim/Visibility.h. doc/architecture.md "Camera and visibility".)
 
+#include <simp/camera/FloorPlanGrid.h>
+#include <simp/camera/PinholeCamera.h>
 #include <simp/geometry/Box3D.h>
-#include <simp/mapping/WallGrid.h>
 
-#include <Eigen/Geometry>
 #include <vector>
 
-namespace simp::mapping {
-
-/// A pinhole camera in the world. Optical frame: x right, y down, z forward.
-struct PinholeCamera {
-    Eigen::Isometry3d world_T_camera{Eigen::Isometry3d::Identity()};
-    double fx_px = 380.0, fy_px = 380.0, cx_px = 320.0, cy_px = 240.0;
-    int width_px = 640, height_px = 480;
-};
+namespace simp::camera {
 
 /// What the camera sees of one box.
 struct BoxView {
@@ -32,7 +27,7 @@ struct BoxView {
     double occludedFraction() const { return covered_px > 0 ? 1.0 - double(visible_px) / covered_px : 1.0; }
 };
 
-struct RenderParams {
+struct ZBufferParams {
     int downscale = 8;                ///< image pixels per z-buffer pixel (per side)
     double near_plane_m = 0.05;       ///< m
     double wall_depth_margin_m = 0.3; ///< m; box surfaces up to this far behind a wall still count visible
@@ -42,21 +37,26 @@ struct RenderParams {
     /// boxes that intersect: distinct objects cannot interpenetrate, so they are estimates of one
     /// object (or nested objects) and must not hide each other. Costs a second rasterization.
     const std::vector<int>* group = nullptr;
+    /// Optional, one entry per box: 0 = the box is seen but hides nothing (a door, Occluders.h);
+    /// such boxes are rendered a second time against the final z-buffer.
+    const std::vector<char>* occludes = nullptr;
 };
 
 /// Renders boxes into a reduced-resolution z-buffer. Reuses its buffers across calls
 /// (one instance per thread); no heap allocation once warmed up.
-class VisibilityRenderer {
+class ZBufferRenderer {
    public:
     /// Views of all `boxes_in_world` for `camera`; walls may be null or empty (no wall occlusion).
     /// out[k] describes boxes_in_world[k].
-    void render(const PinholeCamera& camera, const std::vector<geometry::Box3D>& boxes_in_world, const WallGrid* walls,
-                const RenderParams& params, std::vector<BoxView>& out);
+    void render(const PinholeCamera& camera, const std::vector<geometry::Box3D>& boxes_in_world,
+                const FloorPlanGrid* walls, const ZBufferParams& params, std::vector<BoxView>& out);
 
    private:
     void rasterizePolygon(const Eigen::Vector3d* pts_px_invz, int n, int object);
-    int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility with groups
+    bool seeThrough(int object) const { return m_occludes != nullptr && !(*m_occludes)[static_cast<std::size_t>(object)]; }
+    int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility against the final z-buffer
     const std::vector<int>* m_group = nullptr;
+    const std::vector<char>* m_occludes = nullptr;
     std::vector<int> m_stamp_visible;   ///< last box counted visible at a pixel (pass 1)
 
     int m_w = 0, m_h = 0;
@@ -68,4 +68,4 @@ class VisibilityRenderer {
     std::vector<BoxView>* m_out = nullptr;
 };
 
-}  // namespace simp::mapping
+}  // namespace simp::camera

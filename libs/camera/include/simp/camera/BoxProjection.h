@@ -1,14 +1,14 @@
 #pragma once
 /// \file BoxProjection.h
-/// Projection of a ground-truth 3D box into a posed camera (Eq. reprojection, x = K [R t] X with
-/// [R t] = camera_T_world) and its truncation.
+/// Projection of a 3D box into a camera (Eq. reprojection, x = K [R t] X with [R t] =
+/// camera_T_world, skew included), clipped by the near plane, and its truncation.
 
 #include <simp/geometry/Box3D.h>
-#include <simp/labels/CameraFrames.h>
+#include <simp/camera/PinholeCamera.h>
 
 #include <Eigen/Core>
 
-namespace simp::labels {
+namespace simp::camera {
 
 /// Axis-aligned image box [x_min, y_min, x_max, y_max] (px).
 using ImageBox = Eigen::Vector4d;
@@ -26,11 +26,11 @@ struct ProjectedBox {
 };
 
 /// Eq. reprojection for one point: pixel of the world point X (requires z_camera > 0).
-Eigen::Vector2d projectPoint(const PosedImage& image, const Eigen::Vector3d& X_world);
+Eigen::Vector2d projectPoint(const PinholeCamera& camera, const Eigen::Vector3d& X_world);
 
 /// Projects `box_world`. The solid is first clipped by the plane z_camera = near_m (its 8 corners
 /// in front plus the crossings of its 12 edges), so boxes around or behind the camera project
 /// correctly; a box entirely behind gives visible_in_front = false and truncation = 1.
-ProjectedBox projectBox(const PosedImage& image, const geometry::Box3D& box_world, double near_m = 0.05);
+ProjectedBox projectBox(const PinholeCamera& camera, const geometry::Box3D& box_world, double near_m = 0.05);
 
-}  // namespace simp::labels
+}  // namespace simp::camera

@@ -1,0 +1,94 @@
+/// Doors are seen but hide nothing, in both occlusion strategies (z-buffer and ray cast); other
+/// boxes and walls hide what lies behind them.
+#include <gtest/gtest.h>
+#include <simp/camera/Occluders.h>
+#include <simp/camera/RayCastVisibility.h>
+#include <simp/camera/ZBufferVisibility.h>
+#include <simp/obs/CObservationObjects3D.h>
+
+using namespace simp::camera;
+using simp::geometry::makeUprightBox;
+
+namespace {
+
+/// A camera 0.63 m high at the origin looking along world +x.
+PinholeCamera forwardCamera() {
+    return PinholeCamera::onRobot(mrpt::math::TPose2D(0, 0, 0), simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
+                                  defaultIntrinsics());
+}
+
+/// An open door 2 m ahead (0.9 m wide, 2 m high, 5 cm thick) and a cabinet right behind it.
+const std::vector<simp::geometry::Box3D> kDoorAndCabinet{makeUprightBox({2.0, 0, 1.0}, {0.05, 0.9, 2.0}, 0.0),
+                                                         makeUprightBox({3.5, 0, 0.5}, {0.5, 0.5, 1.0}, 0.0)};
+
+}  // namespace
+
+TEST(Occluders, OnlyDoorsAreSeeThrough) {
+    EXPECT_FALSE(occludes("door"));
+    EXPECT_TRUE(occludes("cabinet"));
+    EXPECT_TRUE(occludes(""));
+    EXPECT_EQ(occludingClasses({"sink", "door", "chair"}), (std::vector<char>{1, 0, 1}));
+}
+
+TEST(Occluders, ZBufferSeesThroughADoor) {
+    ZBufferRenderer r;
+    std::vector<BoxView> solid, see_through;
+    ZBufferParams p;
+    r.render(forwardCamera(), kDoorAndCabinet, nullptr, p, solid);
+    ASSERT_GT(solid[1].covered_px, 20);
+    EXPECT_EQ(solid[1].visible_px, 0);  // the door box hides the cabinet completely
+    const std::vector<char> occ{0, 1};
+    p.occludes = &occ;
+    r.render(forwardCamera(), kDoorAndCabinet, nullptr, p, see_through);
+    EXPECT_EQ(see_through[1].visible_px, see_through[1].covered_px);  // the cabinet is fully visible
+    EXPECT_EQ(see_through[0].visible_px, see_through[0].covered_px);  // the door is seen (nothing in front)
+    EXPECT_EQ(see_through[0].covered_px, solid[0].covered_px);
+}
+
+TEST(Occluders, ZBufferHidesADoorBehindACabinet) {
+    // Swapped: a cabinet in front of the door still hides part of the door.
+    const std::vector<simp::geometry::Box3D> boxes{makeUprightBox({3.0, 0, 1.0}, {0.05, 0.9, 2.0}, 0.0),
+                                                   makeUprightBox({1.5, 0, 0.5}, {0.5, 0.5, 1.0}, 0.0)};
+    const std::vector<char> occ{0, 1};
+    ZBufferParams p;
+    p.occludes = &occ;
+    ZBufferRenderer r;
+    std::vector<BoxView> v;
+    r.render(forwardCamera(), boxes, nullptr, p, v);
+    EXPECT_GT(v[0].occludedFraction(), 0.2);
+    EXPECT_LT(v[0].occludedFraction(), 0.9);
+    EXPECT_EQ(v[1].visible_px, v[1].covered_px);
+}
+
+TEST(Occluders, RayCastSeesThroughADoor) {
+    RayCastParams p;
+    const std::vector<double> solid = rayCastVisibility(forwardCamera(), kDoorAndCabinet, nullptr, p);
+    EXPECT_DOUBLE_EQ(solid[0], 1.0);
+    EXPECT_DOUBLE_EQ(solid[1], 0.0);
+    const std::vector<char> occ{0, 1};
+    const std::vector<double> see_through = rayCastVisibility(forwardCamera(), kDoorAndCabinet, nullptr, p, &occ);
+    EXPECT_DOUBLE_EQ(see_through[0], 1.0);
+    EXPECT_DOUBLE_EQ(see_through[1], 1.0);
+}
+
+TEST(Occluders, WallsStillOccludeBehindADoorGap) {
+    // A wall at x in [3.0, 3.1) across the view: the cabinet at x = 3.5 stays hidden even with the
+    // door see-through (a closed doorway is a wall of the floor plan, not a door box).
+    mrpt::maps::COccupancyGridMap2D g(-1, 5, -3, 3, 0.1f);
+    g.fill(1.0f);
+    for (int cy = 0; cy < static_cast<int>(g.getSizeY()); ++cy) g.setCell(g.x2idx(3.05), cy, 0.0f);
+    const FloorPlanGrid walls(g);
+    const std::vector<char> occ{0, 1};
+    const std::vector<double> vis = rayCastVisibility(forwardCamera(), kDoorAndCabinet, &walls, RayCastParams{}, &occ);
+    EXPECT_DOUBLE_EQ(vis[0], 1.0);
+    EXPECT_DOUBLE_EQ(vis[1], 0.0);
+    ZBufferParams p;
+    p.occludes = &occ;
+    p.wall_depth_margin_m = 0.0;
+    ZBufferRenderer r;
+    std::vector<BoxView> v;
+    r.render(forwardCamera(), kDoorAndCabinet, &walls, p, v);
+    EXPECT_EQ(v[1].unwalled_px, 0);
+    EXPECT_EQ(v[1].visible_px, 0);
+    EXPECT_EQ(v[0].visible_px, v[0].covered_px);
+}
