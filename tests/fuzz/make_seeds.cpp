@@ -32,7 +32,7 @@ simp::world::ObjectMapData smallMap() {
     simp::world::ObjectMapData d;
     d.class_names = {"table", "chair"};
     d.class_noise.assign(2, std::nullopt);
-    simp::world::NoiseModel n;
+    simp::model::NoiseModel n;
     n.mean_m = {0.05, -0.02};
     n.cov_m2 << 0.1, 0.0, 0.0, 0.2;
     n.exponent_b = 2.0;

@@ -108,7 +108,7 @@ world::World makeWorld() {
     auto& m = w.objects;
     m.class_names = obs::defaultClassNames();
     m.class_noise.assign(m.class_names.size(), std::nullopt);
-    world::NoiseModel nm;
+    model::NoiseModel nm;
     nm.cov_m2 = Eigen::Matrix2d::Identity() * (0.15 * 0.15);
     for (auto& n : m.class_noise) n = nm;
     int id = 1;

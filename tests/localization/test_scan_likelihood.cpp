@@ -29,7 +29,7 @@ simp::world::World symmetricRoom() {
     simp::sim::fillRect(g, {10.0, -0.15, 10.15, 6.15}, true);
     auto& m = w.objects;
     m.class_names = simp::obs::defaultClassNames();
-    simp::world::NoiseModel nm;
+    simp::model::NoiseModel nm;
     nm.cov_m2 = Eigen::Matrix2d::Identity() * (0.15 * 0.15);
     m.class_noise.assign(m.class_names.size(), nm);
     const int cabinet = simp::obs::classIndexOf(m.class_names, "cabinet");

@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <simp/model/NoiseFrame.h>
 #include <simp/geometry/Box3D.h>
 #include <simp/mapping/AssociationCost.h>
 #include <simp/mapping/DetectionBox.h>
@@ -25,7 +26,7 @@ TEST(DetectionBox, DetectorAxesBecomeTheObjectFrame) {
     EXPECT_NEAR(simp::geometry::yawOf(o), yaw, 1e-12);
     // the noise frame: y along the longer side (x here), so its yaw is the box yaw + 90 deg,
     // the same for the equivalent frame with x and y swapped
-    EXPECT_NEAR(simp::mapping::noiseFrameYaw(o), yaw + M_PI / 2, 1e-12);
+    EXPECT_NEAR(simp::model::classNoiseFrameYaw(o), yaw + M_PI / 2, 1e-12);
     const Box3D swapped = simp::geometry::makeUprightBox(truth.center, {0.8, 1.6, 0.75}, yaw + M_PI / 2);
-    EXPECT_NEAR(std::remainder(simp::mapping::noiseFrameYaw(swapped) - (yaw + M_PI / 2), M_PI), 0.0, 1e-12);
+    EXPECT_NEAR(std::remainder(simp::model::classNoiseFrameYaw(swapped) - (yaw + M_PI / 2), M_PI), 0.0, 1e-12);
 }

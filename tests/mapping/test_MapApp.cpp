@@ -38,7 +38,7 @@ std::string writeInputs(const std::string& name) {
     w.floorplan = test::makeFloorPlan(8, 6);
     w.objects.class_names = kClasses;
     w.objects.class_noise.resize(kClasses.size());
-    simp::world::NoiseModel table_noise;
+    simp::model::NoiseModel table_noise;
     table_noise.cov_m2 << 0.04, 0, 0, 0.09;
     w.objects.class_noise[0] = table_noise;
     simp::world::MapObject decoy;  // far from anything observed

@@ -36,7 +36,7 @@ const simp::world::MapObject* closest(const simp::world::ObjectMapData& m, int c
 /// An empty map whose cabinets (class 1) have a class model with mean `mu` and 0.1 m sigma.
 simp::world::ObjectMapData mapWithCabinetBias(const Eigen::Vector2d& mu) {
     auto m = emptyMap();
-    simp::world::NoiseModel biased;
+    simp::model::NoiseModel biased;
     biased.mean_m = mu;
     biased.cov_m2 = Eigen::Matrix2d::Identity() * 0.01;
     m.class_noise[1] = biased;
@@ -426,4 +426,35 @@ TEST(ObjectMapBuilder, OneOffDetectionOfAWindowDoesNotReachTheMap) {
     kept = run(0.0);
     EXPECT_EQ(kept[0], 1);
     EXPECT_EQ(kept[1], 1);
+}
+
+TEST(ObjectMapBuilder, AnImportedObjectsOwnNoiseIsReadInItsBoxFrame) {
+    // A cabinet of a given map, 1.6 m long along its x axis (the class noise frame is turned by
+    // 90 deg), with its own noise model as imported maps carry it, in its box frame: sigma 0.5 m
+    // along the box x, 0.05 m across. Detections 0.15 m along its x are 0.3 sigma away in that
+    // frame (C = 0.11 < tau_cost): they confirm it. Read in the class frame they would be 3 sigma
+    // away (C = 0.58) and start a second cabinet. Duplicate merging is off to see the association.
+    auto given = emptyMap();
+    const auto true_box = makeUprightBox({4.5, 2.0, 0.9}, {1.6, 0.5, 1.8}, 0.0);
+    auto cabinet = mapObject(7, 1, true_box, 50);
+    simp::model::NoiseModel own;
+    own.cov_m2 << 0.25, 0.0, 0.0, 0.0025;
+    cabinet.noise = own;
+    given.objects.push_back(cabinet);
+    auto seen_box = true_box;
+    seen_box.center.x() += 0.15;
+    std::vector<mrpt::poses::CPose3D> poses;  // 8 windows
+    for (int s = 0; s < 8; ++s) poses.emplace_back(0.5 + 0.25 * s, 0.2, 0, 0, 0, 0);
+    auto opts = test::testOptions();
+    opts.duplicate_center_radius_m = 0.0;
+    opts.class_duplicate_center_radius_m.clear();
+    opts.duplicate_tau_cost = 0.0;
+    opts.duplicate_min_overlap = 0.0;
+    ObjectMapBuilder b(opts);
+    b.setMap(given);
+    insertExact(b, {{1, seen_box}}, poses, 3);
+    b.flush();
+    ASSERT_EQ(b.map().objects.size(), 1u);
+    EXPECT_EQ(b.map().objects[0].id, 7);
+    EXPECT_GT(b.map().objects[0].n_match, 50);
 }

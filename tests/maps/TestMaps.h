@@ -16,8 +16,8 @@
 
 namespace simp::maps::test {
 
-inline world::NoiseModel noise(double sx, double sy, double b, double mx = 0.0, double my = 0.0) {
-    world::NoiseModel n;
+inline model::NoiseModel noise(double sx, double sy, double b, double mx = 0.0, double my = 0.0) {
+    model::NoiseModel n;
     n.mean_m = {mx, my};
     n.cov_m2 = Eigen::Vector2d(sx * sx, sy * sy).asDiagonal();
     n.exponent_b = b;

@@ -1,6 +1,7 @@
 // The simulator's centre noise from a footprint-heatmap noise model (centreNoiseOf): the model's
 // spread minus the object's own extent (doc/simulator.md "Detection noise").
 #include <gtest/gtest.h>
+#include <simp/model/NoiseFrame.h>
 #include <simp/sim/DetectionModel.h>
 #include <simp/sim/Random.h>
 
@@ -17,9 +18,9 @@ simp::world::MapObject boardAt(double yaw) {
     return o;
 }
 
-simp::world::NoiseModel boardModel() {
+simp::model::NoiseModel boardModel() {
     // the authors' board row of class_noise.csv: sx = 2.95 px, sy = 12.66 px at 0.05 m/px, b = 2
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.mean_m << -0.046, 0.052;
     m.cov_m2 << std::pow(0.1476, 2), 0.0, 0.0, std::pow(0.6328, 2);
     m.exponent_b = 2.0;
@@ -45,7 +46,7 @@ TEST(SimCentreNoise, SubtractsTheFootprintVariancePerAxis) {
 TEST(SimCentreNoise, FloorsWhereTheExtentExplainsTheSpreadAndKeepsTheShape) {
     // A flat-topped model (b = 4) whose spread along y is less than a uniform 1.2 m footprint's:
     // the std is floored at min_centre_noise_fraction of the model's; Sigma scales, b stays.
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.cov_m2 << 0.09, 0.0, 0.0, 0.09;
     m.exponent_b = 4.0;
     simp::world::MapObject o;
@@ -81,7 +82,7 @@ TEST(SimCentreNoise, DrawnOffsetsHaveTheCentreCovariance) {
     simp::sim::Rng rng(9);
     const int n = 20000;
     double s_along = 0;
-    const double yaw_n = simp::sim::noiseFrameYaw(o.box);
+    const double yaw_n = simp::model::classNoiseFrameYaw(o.box);
     for (int i = 0; i < n; ++i) {
         const Eigen::Vector2d e = Eigen::Rotation2Dd(-yaw_n) * (simp::sim::centreOffsetInWorld(view, o, c, p, 1, rng) -
                                                                  Eigen::Rotation2Dd(yaw_n) * c.mean_m);

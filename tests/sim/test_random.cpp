@@ -38,7 +38,7 @@ TEST(SimRandom, UniformAndGammaMoments) {
 
 /// Mean and covariance of many offsets match the model, within 4 standard errors computed
 /// from the samples themselves (Eq. perclassdist; b = 4 has covariance Sigma * E[r^2] / 2).
-void checkNoiseModel(const simp::world::NoiseModel& m, std::uint64_t seed) {
+void checkNoiseModel(const simp::model::NoiseModel& m, std::uint64_t seed) {
     Rng rng(seed);
     const int n = 20000;
     std::vector<Eigen::Vector2d> s(n);
@@ -65,7 +65,7 @@ void checkNoiseModel(const simp::world::NoiseModel& m, std::uint64_t seed) {
 }
 
 TEST(SimRandom, GaussianNoiseModelMeanAndCovariance) {
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.mean_m = {-0.06, 0.05};
     m.cov_m2 << 0.04, 0.012, 0.012, 0.09;
     m.exponent_b = 2.0;
@@ -74,7 +74,7 @@ TEST(SimRandom, GaussianNoiseModelMeanAndCovariance) {
 }
 
 TEST(SimRandom, FlatGeneralizedGaussianMeanAndCovariance) {
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.mean_m = {0.2, -0.1};
     m.cov_m2 << 0.1, -0.02, -0.02, 0.03;
     m.exponent_b = 4.0;
@@ -84,7 +84,7 @@ TEST(SimRandom, FlatGeneralizedGaussianMeanAndCovariance) {
 }
 
 TEST(SimRandom, RejectsInvalidModel) {
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.exponent_b = std::nan("");
     Rng rng(1);
     EXPECT_THROW(simp::sim::sampleCentreOffset(m, rng), std::invalid_argument);

@@ -1,5 +1,6 @@
 // Camera visibility: walls hide objects, ranges and truncation, occlusion by nearer objects.
 #include <gtest/gtest.h>
+#include <simp/model/NoiseFrame.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/ObjectClasses.h>
 #include <simp/sim/DetectionModel.h>
@@ -82,7 +83,7 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
     // many detections of one rotated object at the reference distance, each with its own noise seed
     // (independent persistent parts): offsets rotated back into the noise frame have the model's
     // mean and covariance (Eq. shiftdist), 4 standard errors
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.mean_m = {0.1, -0.05};
     m.cov_m2 << 0.02, 0.0, 0.0, 0.08;
     simp::sim::DetectorParams p;
@@ -92,7 +93,7 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
     const auto o = cabinetAt(4.0, 2.0);
     const auto view = cameraAt(1.0, 2.0, 0.0);
     ASSERT_NEAR((o.box.center - view.world_T_camera.translation()).head<2>().norm(), p.reference_distance_m, 1e-9);
-    const double yaw = simp::sim::noiseFrameYaw(o.box);
+    const double yaw = simp::model::classNoiseFrameYaw(o.box);
     simp::sim::Rng rng(3);
     const int n = 5000;
     Eigen::Vector2d sum = Eigen::Vector2d::Zero();
@@ -119,7 +120,7 @@ TEST(SimDetection, CentreNoiseFollowsTheModelInTheObjectFrame) {
 }
 
 TEST(SimDetection, NoiseIsPersistentPerViewpointAndGrowsAlongTheRay) {
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     m.cov_m2 << 0.02, 0.0, 0.0, 0.08;
     simp::sim::DetectorParams p;
     const auto o = cabinetAt(4.0, 2.0);
@@ -138,7 +139,7 @@ TEST(SimDetection, NoiseIsPersistentPerViewpointAndGrowsAlongTheRay) {
     EXPECT_NEAR(sum_d2 / n, expected, 4 * expected * std::sqrt(2.0 / n));
     // at twice the reference distance the error along the ray (world x here) has twice the std
     const auto far_view = cameraAt(4.0 - 2 * p.reference_distance_m, 2.0, 0.0);
-    const double yaw = simp::sim::noiseFrameYaw(o.box);
+    const double yaw = simp::model::classNoiseFrameYaw(o.box);
     const Eigen::Matrix2d R = Eigen::Rotation2Dd(yaw).toRotationMatrix();
     const Eigen::Matrix2d cov_w = R * m.cov_m2 * R.transpose();
     double s_near = 0, s_far = 0;
@@ -151,7 +152,7 @@ TEST(SimDetection, NoiseIsPersistentPerViewpointAndGrowsAlongTheRay) {
 }
 
 TEST(SimDetection, MissesWrongLabelsAndScores) {
-    simp::world::NoiseModel m;
+    simp::model::NoiseModel m;
     simp::sim::DetectorParams p;
     p.detection_probability = 0.7;
     p.wrong_class_probability = 0.2;

@@ -3,7 +3,7 @@
 /// centres are drawn from a known per-class Gaussian in the object frame.
 #include "common/ErrorOf.h"
 #include <gtest/gtest.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
@@ -92,7 +92,7 @@ void simulate(const std::string& dir, const world::ObjectMapData& w, const std::
             const TrueNoise& n = noise[static_cast<std::size_t>(m.class_id)];
             const Eigen::Vector2d e = n.mu + n.Sigma.llt().matrixL() * Eigen::Vector2d(g(rng), g(rng));
             // in the class noise frame, where the simulator, the sensor model and the mapper read it
-            const double yaw = world::classNoiseFrameYaw(m.box);
+            const double yaw = model::classNoiseFrameYaw(m.box);
             geometry::Box3D b = m.box;
             b.center.head<2>() += Eigen::Rotation2Dd(yaw) * e;
             obs::Detection3D d;

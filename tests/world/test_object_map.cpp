@@ -19,7 +19,7 @@ ObjectMapData makeMap() {
     ObjectMapData d;
     d.class_names = simp::obs::defaultClassNames();
     d.class_noise.assign(d.class_names.size(), std::nullopt);
-    NoiseModel table;
+    simp::model::NoiseModel table;
     table.mean_m = {-0.072, 0.0488};
     table.cov_m2 << 0.1479, 0.0123, 0.0123, 0.6553;
     table.exponent_b = 4.0;
@@ -37,7 +37,7 @@ ObjectMapData makeMap() {
         o.n_skip = i;
         o.room_id = i % 3;
         if (i == 1) {
-            NoiseModel n;
+            simp::model::NoiseModel n;
             n.mean_m = {0.01, -1.0 / 3.0};
             n.cov_m2 << 0.02, -0.001, -0.001, 0.05;
             o.noise = n;
@@ -244,23 +244,6 @@ TEST(ObjectMapData, ClassIdAndNoiseOf) {
     ASSERT_TRUE(d.noiseOf(d.objects[1]).has_value());
     EXPECT_DOUBLE_EQ(d.noiseOf(d.objects[1])->mean_m.y(), -1.0 / 3.0);
     EXPECT_FALSE(d.noiseOf(d.objects[3]).has_value());
-}
-
-TEST(NoiseModel, Validity) {
-    NoiseModel n;
-    EXPECT_TRUE(n.isValid());
-    n.cov_m2 << 0.04, 0.01, 0.01, 0.04;
-    EXPECT_TRUE(n.isValid());
-    n.cov_m2 << 0.04, 0.05, 0.05, 0.04;  // indefinite
-    EXPECT_FALSE(n.isValid());
-    n.cov_m2 << 0.04, 0.01, 0.02, 0.04;  // not symmetric
-    EXPECT_FALSE(n.isValid());
-    n = NoiseModel{};
-    n.exponent_b = 0;
-    EXPECT_FALSE(n.isValid());
-    n = NoiseModel{};
-    n.mean_m.x() = std::nan("");
-    EXPECT_FALSE(n.isValid());
 }
 
 TEST(DefaultClassHeight, AllPaperClassesRealisticAndUnknownThrows) {

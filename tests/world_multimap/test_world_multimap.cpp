@@ -15,7 +15,7 @@ simp::world::World smallWorld() {
     w.floorplan.setSize(0.0, 10.0, 0.0, 6.0, 0.05, 1.0f);  // all free (MRPT cell value = P(free))
     w.objects.class_names = simp::obs::defaultClassNames();
     w.objects.class_noise.assign(w.objects.class_names.size(), std::nullopt);
-    simp::world::NoiseModel n;
+    simp::model::NoiseModel n;
     n.cov_m2 = Eigen::Vector2d(0.2 * 0.2, 0.2 * 0.2).asDiagonal();
     const int table = w.objects.classId("table"), cabinet = w.objects.classId("cabinet");
     w.objects.class_noise[table] = n;

@@ -1,4 +1,5 @@
 #include <simp/localization/FrameLikelihood.h>
+#include <simp/model/SingleFrameWeight.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,10 +23,8 @@ std::size_t groupLogLikelihoods(const maps::CObjectMap& map, const std::vector<c
         map.accumulateLogLikelihoods(*o->obs, poses, n, out_log, K, o->weights.empty() ? nullptr : o->weights.data());
     }
     if (K == 0) return 0;
-    // Eq. singw: prod_k p_k^(1/K)  ->  (1/K) sum_k log p_k
-    const double inv_k = 1.0 / static_cast<double>(K);
     for (std::size_t i = 0; i < n; ++i) {
-        out_log[i] *= inv_k;
+        out_log[i] = model::singwLog(out_log[i], K);
         if (!std::isfinite(out_log[i]))
             throw std::runtime_error("Eq. singw: non-finite log-likelihood for pose " + std::to_string(i) + " (" +
                                      std::to_string(poses[i].x) + ", " + std::to_string(poses[i].y) + ", " +

@@ -1,31 +1,16 @@
 #include <simp/geometry/Box3DIoU.h>
 #include <simp/geometry/RotationAverage.h>
 #include <simp/mapping/AssociationCost.h>
-#include <simp/world/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
 
 namespace simp::mapping {
 
-double noiseFrameYaw(const geometry::Box3D& box) { return world::classNoiseFrameYaw(box); }
-
-double centerScore(const geometry::Box3D& o1, const world::NoiseModel& noise, const Eigen::Vector3d& c) {
-    // Eq. shiftdist: mu_o = mu + c_o, Sigma_o = R_o Sigma R_o^T  <=>  evaluate in the object frame.
-    const double yaw = noiseFrameYaw(o1);
-    const double cs = std::cos(yaw), sn = std::sin(yaw);
-    const Eigen::Vector2d delta = (c - o1.center).head<2>();
-    const Eigen::Vector2d local(cs * delta.x() + sn * delta.y(), -sn * delta.x() + cs * delta.y());
-    const Eigen::Vector2d d = local - noise.mean_m;
-    const double m2 = d.dot(noise.cov_m2.ldlt().solve(d));  // squared Mahalanobis distance
-    // Eq. perclassdist, unnormalized, generalized exponent b: exp(-0.5 m^b).
-    return std::exp(-0.5 * std::pow(std::max(m2, 0.0), 0.5 * noise.exponent_b));
-}
-
-double associationCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, const geometry::Box3D& o2) {
+double associationCost(const geometry::Box3D& o1, const model::ObjectDistribution& p_o1, const geometry::Box3D& o2) {
     // Eq. costfunc
     const double c_iou = 1.0 - geometry::iou3D(o1, o2);
-    const double c_cen = 1.0 - centerScore(o1, noise_o1, o2.center);
+    const double c_cen = 1.0 - p_o1.probability(o2.center.x(), o2.center.y());
     return 0.5 * (c_iou + c_cen);
 }
 

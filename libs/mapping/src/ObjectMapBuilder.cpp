@@ -8,7 +8,7 @@
 #include <simp/mapping/DetectionBox.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/mapping/RoomSegmentation.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
@@ -126,8 +126,8 @@ int ObjectMapBuilder::mapClassOf(const std::string& name) {
     return static_cast<int>(m_g.class_names.size()) - 1;
 }
 
-world::NoiseModel ObjectMapBuilder::costNoise(const std::optional<world::NoiseModel>& model) const {
-    world::NoiseModel n;
+model::NoiseModel ObjectMapBuilder::costNoise(const std::optional<model::NoiseModel>& model) const {
+    model::NoiseModel n;
     if (model && model->isValid()) {
         n = *model;
     } else {  // classes without a model: isotropic Gaussian
@@ -141,15 +141,18 @@ world::NoiseModel ObjectMapBuilder::costNoise(const std::optional<world::NoiseMo
     return n;
 }
 
-world::NoiseModel ObjectMapBuilder::noiseOfClass(int class_id) const {
-    if (class_id >= 0 && static_cast<std::size_t>(class_id) < m_g.class_noise.size())
-        return costNoise(m_g.class_noise[class_id]);
-    return costNoise(std::nullopt);
+model::ObjectDistribution ObjectMapBuilder::classDistribution(int class_id, const geometry::Box3D& box) const {
+    const bool modelled = class_id >= 0 && static_cast<std::size_t>(class_id) < m_g.class_noise.size();
+    return model::makeObjectDistribution(box, costNoise(modelled ? m_g.class_noise[class_id] : std::nullopt),
+                                         model::NoiseSource::Class);
 }
 
-world::NoiseModel ObjectMapBuilder::noiseOfObject(const world::MapObject& o) const {
-    if (o.noise && o.noise->isValid()) return costNoise(o.noise);
-    return noiseOfClass(o.class_id);
+model::ObjectDistribution ObjectMapBuilder::objectDistribution(const world::MapObject& o,
+                                                               const geometry::Box3D& box) const {
+    // An object's own noise is in its box frame (model::NoiseFrame.h), not the class noise frame.
+    if (o.noise && o.noise->isValid())
+        return model::makeObjectDistribution(box, costNoise(o.noise), model::NoiseSource::Object);
+    return classDistribution(o.class_id, box);
 }
 
 Eigen::Vector2d ObjectMapBuilder::classBiasOf(int class_id, const geometry::Box3D& box) const {
@@ -157,7 +160,7 @@ Eigen::Vector2d ObjectMapBuilder::classBiasOf(int class_id, const geometry::Box3
     if (class_id < 0 || c >= m_g.class_noise.size() || !m_g.class_noise[c] || !m_g.class_noise[c]->isValid())
         return Eigen::Vector2d::Zero();
     // Eq. shiftdist: a detection's centre is offset by R_o mu from the object's (class noise frame).
-    return Eigen::Rotation2Dd(world::classNoiseFrameYaw(box)) * m_g.class_noise[c]->mean_m;
+    return Eigen::Rotation2Dd(model::classNoiseFrameYaw(box)) * m_g.class_noise[c]->mean_m;
 }
 
 camera::PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs,
@@ -244,7 +247,7 @@ void ObjectMapBuilder::insertIntoLocalMap(const std::vector<LocalObject>& dets) 
             for (std::size_t c = 0; c < n_local; ++c)
                 cost(r, c) = dets[r].class_id != m_local[c].class_id
                                  ? kForbiddenCost
-                                 : associationCost(m_local[c].box, noiseOfClass(m_local[c].class_id), dets[r].box);
+                                 : associationCost(m_local[c].box, classDistribution(m_local[c].class_id, m_local[c].box), dets[r].box);
         assignment = geometry::solveAssignment(cost);
         for (std::size_t r = 0; r < dets.size(); ++r)
             if (assignment[r] >= 0 && !(cost(r, assignment[r]) < m_options.tau_cost)) assignment[r] = -1;

@@ -82,17 +82,17 @@ void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int curre
     }
 }
 
-double ObjectMapBuilder::duplicateCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, int class_id,
+double ObjectMapBuilder::duplicateCost(const geometry::Box3D& o1, const model::ObjectDistribution& p_o1, int class_id,
                                        const geometry::Box3D& o2) const {
     const double dist = (o1.center - o2.center).head<2>().norm();
     const double radius = m_options.duplicateCenterRadiusOf(m_g.class_names[class_id]);
     if (m_options.duplicate_min_overlap > 0 && dist < 0.5 * (o1.size.norm() + o2.size.norm())) {
         const double smaller = std::min(o1.size.prod(), o2.size.prod());
         if (smaller > 0 && geometry::intersectionVolume(o1, o2) > m_options.duplicate_min_overlap * smaller)
-            return associationCost(o1, noise_o1, o2);
+            return associationCost(o1, p_o1, o2);
     }
     if (dist >= std::max(m_options.duplicate_max_distance_m, radius)) return kNotDuplicate;
-    const double c = associationCost(o1, noise_o1, o2);
+    const double c = associationCost(o1, p_o1, o2);
     if (dist < radius) return c;
     return dist < m_options.duplicate_max_distance_m && c < m_options.duplicate_tau_cost ? c : kNotDuplicate;
 }
@@ -109,7 +109,7 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
                 const bool i_ref = m_local[i].n_match >= m_local[j].n_match;
                 const LocalObject& a = i_ref ? m_local[i] : m_local[j];
                 const LocalObject& b = i_ref ? m_local[j] : m_local[i];
-                const double c = duplicateCost(a.box, noiseOfClass(a.class_id), a.class_id, b.box);
+                const double c = duplicateCost(a.box, classDistribution(a.class_id, a.box), a.class_id, b.box);
                 if (c < best) best = c, bi = i, bj = j;
             }
         if (best >= kNotDuplicate) return;
@@ -143,8 +143,8 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
                     if (gi != gj) r = gi ? i : j;  // the earlier object keeps its id
                 }
                 const std::size_t o = r == i ? j : i;
-                const double c = duplicateCost(m_g.objects[r].box, noiseOfObject(m_g.objects[r]), m_g.objects[r].class_id,
-                                               m_g.objects[o].box);
+                const world::MapObject& ref = m_g.objects[r];
+                const double c = duplicateCost(ref.box, objectDistribution(ref, ref.box), ref.class_id, m_g.objects[o].box);
                 if (c < best) best = c, keep = r, drop = o;
             }
         if (best >= kNotDuplicate) break;
@@ -259,7 +259,8 @@ void ObjectMapBuilder::flush() {
                     cost(r, c) = kForbiddenCost;
                     continue;
                 }
-                cost(r, c) = associationCost(estimateOf(o), noiseOfObject(o), locals[r]->box);
+                const geometry::Box3D estimate = estimateOf(o);
+                cost(r, c) = associationCost(estimate, objectDistribution(o, estimate), locals[r]->box);
             }
         assignment = geometry::solveAssignment(cost);
     }

@@ -21,16 +21,16 @@ namespace {
 constexpr std::uint8_t kVersion = 0;
 const std::string kWhere = "CObjectMap archive";
 
-void writeNoise(mrpt::serialization::CArchive& out, const std::optional<simp::world::NoiseModel>& n) {
+void writeNoise(mrpt::serialization::CArchive& out, const std::optional<simp::model::NoiseModel>& n) {
     out << n.has_value();
     if (!n) return;
     out << n->mean_m.x() << n->mean_m.y() << n->cov_m2(0, 0) << n->cov_m2(0, 1) << n->cov_m2(1, 0) << n->cov_m2(1, 1)
         << n->exponent_b;
 }
 
-std::optional<simp::world::NoiseModel> readNoise(mrpt::serialization::CArchive& in, const std::string& what) {
+std::optional<simp::model::NoiseModel> readNoise(mrpt::serialization::CArchive& in, const std::string& what) {
     if (!simp::obs::archive::readBool(in, what + ": field 'has_noise'")) return std::nullopt;
-    simp::world::NoiseModel n;
+    simp::model::NoiseModel n;
     in >> n.mean_m.x() >> n.mean_m.y() >> n.cov_m2(0, 0) >> n.cov_m2(0, 1) >> n.cov_m2(1, 0) >> n.cov_m2(1, 1) >>
         n.exponent_b;
     return n;

@@ -1,5 +1,6 @@
 #include <mrpt/core/exceptions.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/model/SingleFrameWeight.h>
 
 #include <array>
 #include <cmath>
@@ -91,8 +92,7 @@ double CObjectMap::internal_computeObservationLikelihood(const mrpt::obs::CObser
     std::size_t used = 0;
     accumulateLogLikelihoods(*objects, &pose, 1, &sum_log, used);
     if (used == 0) return 0.0;
-    // Eq. singw: geometric mean of the K per-detection likelihoods -> mean of their logs.
-    const double log_p = sum_log / static_cast<double>(used);
+    const double log_p = model::singwLog(sum_log, used);
     MRPT_CHECK_NORMAL_NUMBER(log_p);
     return log_p;
 }

@@ -1,5 +1,5 @@
 #include <simp/maps/ObjectProbabilityMap.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +43,7 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
             continue;
         }
         try {
-            m_distributions[i] = makeObjectDistribution(obj.box, *noise, world::noiseFrameYawOf(obj));
+            m_distributions[i] = model::makeObjectDistribution(obj.box, *noise, obj.noiseSource());
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("object map: " + objectWhere(data, i) + " of class '" + cls + "': " + e.what());
         }
@@ -63,7 +63,7 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
         std::vector<double> half_x, half_y;  // support half extents per object (m)
         for (const std::int32_t o : cls.objects) {
             const auto& d = m_distributions[static_cast<std::size_t>(o)];
-            const double m_s = supportMahalanobisRadius(2.0 * d.half_b, options.min_probability);
+            const double m_s = model::supportMahalanobisRadius(2.0 * d.half_b, options.min_probability);
             half_x.push_back(m_s * d.sigma_x_m);  // exact x extent of the ellipse m <= m_s
             half_y.push_back(m_s * d.sigma_y_m);
             x_min = std::min(x_min, d.mean_world_m.x() - half_x.back());
@@ -110,7 +110,7 @@ ObjectProbabilityMap::Lookup ObjectProbabilityMap::bruteForce(int class_id, doub
 }
 
 std::size_t ObjectProbabilityMap::memoryBytes() const {
-    std::size_t bytes = m_distributions.size() * sizeof(ObjectDistribution);
+    std::size_t bytes = m_distributions.size() * sizeof(model::ObjectDistribution);
     for (const auto& c : m_classes) bytes += c.best.size() * sizeof(std::int32_t);
     return bytes;
 }

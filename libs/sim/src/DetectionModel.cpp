@@ -1,5 +1,5 @@
 #include <simp/sim/DetectionModel.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 #include <simp/sim/Furniture.h>
 
 #include <algorithm>
@@ -22,24 +22,22 @@ std::optional<obs::Detection3D> finish(const camera::PinholeCamera& view, obs::D
 
 }  // namespace
 
-double noiseFrameYaw(const geometry::Box3D& box) { return world::classNoiseFrameYaw(box); }
-
-world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p) {
+model::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p) {
     if (o.noise) return *o.noise;
     if (o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < map.class_noise.size() &&
         map.class_noise[static_cast<std::size_t>(o.class_id)])
         return *map.class_noise[static_cast<std::size_t>(o.class_id)];
-    world::NoiseModel m;
+    model::NoiseModel m;
     m.mean_m.setZero();
     m.cov_m2 = Eigen::Matrix2d::Identity() * p.default_noise_std_m * p.default_noise_std_m;
     m.exponent_b = 2.0;
     return m;
 }
 
-world::NoiseModel centreNoiseOf(const world::NoiseModel& model, const world::MapObject& o, const DetectorParams& p) {
+model::NoiseModel centreNoiseOf(const model::NoiseModel& model, const world::MapObject& o, const DetectorParams& p) {
     if (!p.noise_model_includes_extent) return model;
     // The footprint's covariance (uniform box, box frame) expressed in the model's frame.
-    const Eigen::Rotation2Dd R(geometry::yawOf(o.box) - world::noiseFrameYawOf(o));
+    const Eigen::Rotation2Dd R(geometry::yawOf(o.box) - model::noiseFrameYaw(o.box, o.noiseSource()));
     const Eigen::Vector2d side = o.box.size.head<2>();
     const Eigen::Matrix2d extent = R.toRotationMatrix() * (side.cwiseProduct(side) / 12.0).asDiagonal() *
                                    R.toRotationMatrix().transpose();
@@ -49,7 +47,7 @@ world::NoiseModel centreNoiseOf(const world::NoiseModel& model, const world::Map
         const double floor2 = p.min_centre_noise_fraction * p.min_centre_noise_fraction * spread(i, i);
         scale[i] = std::sqrt(std::max(spread(i, i) - extent(i, i), floor2) / spread(i, i));
     }
-    world::NoiseModel out = model;
+    model::NoiseModel out = model;
     out.cov_m2 = scale.asDiagonal() * model.cov_m2 * scale.asDiagonal();
     return out;
 }
@@ -68,9 +66,9 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
     return out;
 }
 
-Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const world::NoiseModel& noise,
+Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const model::NoiseModel& noise,
                                     const DetectorParams& p, std::uint64_t noise_seed, Rng& rng) {
-    world::NoiseModel zero_mean = noise;
+    model::NoiseModel zero_mean = noise;
     zero_mean.mean_m.setZero();
     const Eigen::Vector2d cam = view.world_T_camera.translation().head<2>();
     const Eigen::Vector2d ray = o.box.center.head<2>() - cam;
@@ -90,7 +88,7 @@ Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const wor
     }
     if (f < 1) e += std::sqrt(1.0 - f) * sampleCentreOffset(zero_mean, rng);
     // Eq. shiftdist: the class distribution rotated into the object's ground frame
-    const Eigen::Rotation2Dd R_o(world::noiseFrameYawOf(o));  // own noise: box frame; class noise: noise frame
+    const Eigen::Rotation2Dd R_o(model::noiseFrameYaw(o.box, o.noiseSource()));  // own noise: box frame; class noise: noise frame
     Eigen::Vector2d dev = R_o * e;
     if (dist > 1e-9) {  // depth error along the viewing ray grows with distance
         const Eigen::Vector2d u = ray / dist;
@@ -100,7 +98,7 @@ Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const wor
 }
 
 std::optional<obs::Detection3D> detectObject(const camera::PinholeCamera& view, const world::MapObject& o,
-                                             const world::NoiseModel& noise, std::size_t num_classes,
+                                             const model::NoiseModel& noise, std::size_t num_classes,
                                              const DetectorParams& p, Rng& rng, std::uint64_t noise_seed) {
     if (!rng.bernoulli(p.detection_probability)) return std::nullopt;
     const double yaw = geometry::yawOf(o.box);

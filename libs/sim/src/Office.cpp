@@ -39,7 +39,7 @@ int plainWall(const Room& r, Rng& rng) {
 
 }  // namespace
 
-std::vector<std::optional<world::NoiseModel>> officeClassNoise(const std::vector<std::string>& class_names) {
+std::vector<std::optional<model::NoiseModel>> officeClassNoise(const std::vector<std::string>& class_names) {
     struct Row {
         double mx, my, sx, sy, b;
     };
@@ -51,11 +51,11 @@ std::vector<std::optional<world::NoiseModel>> officeClassNoise(const std::vector
         {"sofa", {-0.800, 2.304, 7.153, 22.033, 2}},      {"cabinet", {-0.985, 0.781, 4.694, 11.558, 2}},
         {"fire extinguisher", {0.164, -0.378, 1.896, 2.198, 2}}, {"desk", {5.288, 6.393, 5.418, 20.390, 2}},
     };
-    std::vector<std::optional<world::NoiseModel>> out(class_names.size());
+    std::vector<std::optional<model::NoiseModel>> out(class_names.size());
     for (std::size_t i = 0; i < class_names.size(); ++i) {
         const auto it = rows.find(class_names[i]);
         if (it == rows.end()) continue;
-        world::NoiseModel m;
+        model::NoiseModel m;
         m.mean_m = Eigen::Vector2d(it->second.mx, it->second.my) * kPixel_m;
         m.cov_m2 = Eigen::Vector2d(std::pow(it->second.sx * kPixel_m, 2), std::pow(it->second.sy * kPixel_m, 2)).asDiagonal();
         m.exponent_b = it->second.b;

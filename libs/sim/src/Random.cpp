@@ -58,7 +58,7 @@ int Rng::poisson(double lambda) {
     return k;
 }
 
-Eigen::Vector2d sampleCentreOffset(const world::NoiseModel& model, Rng& rng) {
+Eigen::Vector2d sampleCentreOffset(const model::NoiseModel& model, Rng& rng) {
     if (!model.isValid()) throw std::invalid_argument("sampleCentreOffset: invalid noise model");
     const double b = model.exponent_b;
     const double r = std::pow(2.0 * rng.gamma(2.0 / b), 1.0 / b);
@@ -67,7 +67,7 @@ Eigen::Vector2d sampleCentreOffset(const world::NoiseModel& model, Rng& rng) {
     return model.mean_m + L * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
 }
 
-Eigen::Matrix2d offsetCovariance(const world::NoiseModel& model) {
+Eigen::Matrix2d offsetCovariance(const model::NoiseModel& model) {
     const double b = model.exponent_b;
     const double e_r2 = std::pow(2.0, 2.0 / b) * std::tgamma(4.0 / b) / std::tgamma(2.0 / b);
     return model.cov_m2 * (e_r2 / 2.0);

@@ -126,7 +126,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     mrpt::img::TCamera K = cam.intrinsics;  // written into every observation
     K.cameraName = "simp-sim";
     const int camera_every = std::max(1, static_cast<int>(std::lround(params.odometry.rate_hz / cam.rate_hz)));
-    world::NoiseModel person_noise;
+    model::NoiseModel person_noise;
     person_noise.cov_m2 = Eigen::Matrix2d::Identity() * std::pow(params.detector.default_noise_std_m, 2);
 
     if (!mrpt::system::directoryExists(out_dir) && !mrpt::system::createDirectory(out_dir))

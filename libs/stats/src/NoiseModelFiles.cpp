@@ -40,7 +40,7 @@ void writeClassNoiseCsv(const std::string& path, const std::vector<std::optional
     for (std::size_t c = 0; c < fits.size(); ++c) {
         out << c;
         if (fits[c]) {
-            const world::NoiseModel& m = fits[c]->model;
+            const model::NoiseModel& m = fits[c]->model;
             out << ',' << m.mean_m.x() / resolution_m << ',' << m.mean_m.y() / resolution_m << ','
                 << std::sqrt(m.cov_m2(0, 0)) / resolution_m << ',' << std::sqrt(m.cov_m2(1, 1)) / resolution_m
                 << ',' << m.exponent_b << '\n';

@@ -3,7 +3,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <simp/stats/GroundTruthMatch.h>
 #include <simp/stats/OffsetSamples.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 
 #include <cmath>
 
@@ -12,7 +12,7 @@ namespace simp::stats {
 Eigen::Vector2d offsetInObjectFrame(const geometry::Box3D& prediction_in_world, const geometry::Box3D& object) {
     // The class noise frame (y along the longer side), in which the simulator, the sensor model
     // and the mapper read a class model: independent of which of the box's equivalent frames it has.
-    const double yaw = world::classNoiseFrameYaw(object);
+    const double yaw = model::classNoiseFrameYaw(object);
     const Eigen::Vector2d d = (prediction_in_world.center - object.center).head<2>();
     const double c = std::cos(yaw), s = std::sin(yaw);
     return {c * d.x() + s * d.y(), -s * d.x() + c * d.y()};

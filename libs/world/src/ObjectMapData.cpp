@@ -10,7 +10,7 @@ int ObjectMapData::classId(const std::string& name) const {
     return obs::classIndexOf(class_names, name);
 }
 
-std::optional<NoiseModel> ObjectMapData::noiseOf(const MapObject& o) const {
+std::optional<model::NoiseModel> ObjectMapData::noiseOf(const MapObject& o) const {
     if (o.noise) return o.noise;
     if (o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < class_noise.size())
         return class_noise[static_cast<std::size_t>(o.class_id)];

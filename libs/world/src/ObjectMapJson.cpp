@@ -36,15 +36,15 @@ int asInt(const json& v, const std::string& file, const std::string& key, long l
 constexpr const char* kFormat = "simp-object-map";
 constexpr int kVersion = 1;
 
-nlohmann::ordered_json noiseToJson(const NoiseModel& n) {
+nlohmann::ordered_json noiseToJson(const model::NoiseModel& n) {
     return nlohmann::ordered_json{{"mean_m", {n.mean_m.x(), n.mean_m.y()}},
                 {"cov_m2", {{n.cov_m2(0, 0), n.cov_m2(0, 1)}, {n.cov_m2(1, 0), n.cov_m2(1, 1)}}},
                 {"b", n.exponent_b}};
 }
 
-NoiseModel noiseFromJson(const json& j, const std::string& file, const std::string& key) {
+model::NoiseModel noiseFromJson(const json& j, const std::string& file, const std::string& key) {
     if (!j.is_object()) failAt(file, key, "expected an object with mean_m, cov_m2, b");
-    NoiseModel n;
+    model::NoiseModel n;
     const auto mean = asNumbers(requireKey(j, "mean_m", file, key + ".mean_m"), 2, file,
                                         key + ".mean_m", "2 numbers [x, y] (m)");
     n.mean_m = Eigen::Vector2d(mean[0], mean[1]);

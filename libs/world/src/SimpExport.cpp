@@ -58,7 +58,7 @@ ObjectPx toPixels(const ObjectMapData& d, const MapObject& o, const SimpPixelFra
     const double signs[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (std::size_t k = 0; k < 4; ++k)
         out.corners[k] = px.toPixelRounded(c + R * Eigen::Vector2d(signs[k][0] * half.x(), signs[k][1] * half.y()));
-    const NoiseModel n = d.noiseOf(o).value_or(NoiseModel{});
+    const model::NoiseModel n = d.noiseOf(o).value_or(model::NoiseModel{});
     const Eigen::Vector2d mean_px = px.toPixel(c + R * n.mean_m);
     const Eigen::Matrix2d cov_world = R * n.cov_m2 * R.transpose();
     out.mx = mean_px.x();

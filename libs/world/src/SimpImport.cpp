@@ -5,7 +5,7 @@
 #include <simp/io/StrictNumber.h>
 #include <simp/geometry/Box3D.h>
 #include <simp/world/JsonRead.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/NoiseFrame.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/SimpPixels.h>
 
@@ -136,7 +136,7 @@ double chooseYaw(const RectangleFit& fit, const std::optional<ClassNoisePx>& cls
 // class means of class_noise.csv are not in the frame those objects use (the y axis is flipped
 // for most classes, the desk's mean is turned by 90 deg), and the objects' models are what the
 // detections follow. The class mean becomes the mean of the objects' offsets in the class noise
-// frame (simp::world::classNoiseFrameYaw), as simp-stats learns it, so that a mapper that removes
+// frame (simp::model::classNoiseFrameYaw), as simp-stats learns it, so that a mapper that removes
 // the class bias (doc/mapping.md "Detector bias") removes the one its detections have.
 void classMeansFromObjects(ObjectMapData& map) {
     std::vector<Eigen::Vector2d> sum(map.class_names.size(), Eigen::Vector2d::Zero());
@@ -144,7 +144,7 @@ void classMeansFromObjects(ObjectMapData& map) {
     for (const MapObject& o : map.objects) {
         if (!o.noise) continue;
         const Eigen::Vector2d world = Eigen::Rotation2Dd(geometry::yawOf(o.box)) * o.noise->mean_m;
-        sum[static_cast<std::size_t>(o.class_id)] += Eigen::Rotation2Dd(-classNoiseFrameYaw(o.box)) * world;
+        sum[static_cast<std::size_t>(o.class_id)] += Eigen::Rotation2Dd(-model::classNoiseFrameYaw(o.box)) * world;
         ++count[static_cast<std::size_t>(o.class_id)];
     }
     for (std::size_t c = 0; c < map.class_names.size(); ++c)
@@ -231,7 +231,7 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
     w.objects.class_noise.assign(num_classes, std::nullopt);
     for (std::size_t c = 0; c < num_classes; ++c)
         if (class_px[c]) {
-            NoiseModel n;
+            model::NoiseModel n;
             n.mean_m = res * Eigen::Vector2d(class_px[c]->mx, class_px[c]->my);
             n.cov_m2 = res * res * Eigen::Vector2d(class_px[c]->sx * class_px[c]->sx, class_px[c]->sy * class_px[c]->sy).asDiagonal();
             n.exponent_b = class_px[c]->b;
@@ -290,7 +290,7 @@ World importSimpMap(const std::string& dir, const SimpImportOptions& options) {
         // Per-object noise: absolute mean pixel -> offset from the box centre in the object
         // frame; pixel-axis scales -> Sigma_world = res^2 diag(sx^2, sy^2) -> R^T Sigma R.
         const Eigen::Matrix2d R = rot2(yaw);
-        NoiseModel noise;
+        model::NoiseModel noise;
         noise.mean_m = R.transpose() * (px.toWorld(Eigen::Vector2d(mx[i], my[i])) - fit.center_m);
         const Eigen::Matrix2d cov_world = res * res * Eigen::Vector2d(sx[i] * sx[i], sy[i] * sy[i]).asDiagonal();
         noise.cov_m2 = R.transpose() * cov_world * R;

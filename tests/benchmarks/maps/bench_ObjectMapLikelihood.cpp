@@ -30,7 +30,7 @@ simp::world::ObjectMapData generatedMap(unsigned seed) {
     m.class_noise.assign(m.class_names.size(), std::nullopt);
     const std::vector<std::string> classes = {"chair", "table", "desk", "cabinet", "door", "board"};
     for (const auto& c : classes) {
-        simp::world::NoiseModel n;
+        simp::model::NoiseModel n;
         n.cov_m2 = Eigen::Vector2d(0.25 * 0.25, 0.15 * 0.15).asDiagonal();
         m.class_noise[m.classId(c)] = n;
     }

@@ -9,6 +9,7 @@
 #include <simp/mapping/MappingOptions.h>
 #include <simp/camera/FloorPlanGrid.h>
 #include <simp/camera/ZBufferVisibility.h>
+#include <simp/model/ObjectDistribution.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/ObjectMapData.h>
 #include <simp/world/World.h>
@@ -122,15 +123,19 @@ class ObjectMapBuilder {
     int mapClassOf(const std::string& name);
     /// The noise model used in C_cen (Eq. costfunc): the given model (else the isotropic default),
     /// with its mean zeroed unless cost_uses_noise_mean.
-    world::NoiseModel costNoise(const std::optional<world::NoiseModel>& model) const;
-    world::NoiseModel noiseOfClass(int class_id) const;
+    model::NoiseModel costNoise(const std::optional<model::NoiseModel>& model) const;
+    /// p_o1 of C_cen (Eq. costfunc) for a box of class `class_id`: its class's cost noise in the
+    /// class noise frame.
+    model::ObjectDistribution classDistribution(int class_id, const geometry::Box3D& box) const;
+    /// p_o1 of C_cen for map object `o` at box `box` (its current estimate): its own noise model in
+    /// its box frame when it has a valid one (imported maps), else classDistribution().
+    model::ObjectDistribution objectDistribution(const world::MapObject& o, const geometry::Box3D& box) const;
     /// The class noise model's mean offset mu of a detection box, in the world (zero without a model).
     Eigen::Vector2d classBiasOf(int class_id, const geometry::Box3D& box) const;
-    world::NoiseModel noiseOfObject(const world::MapObject& o) const;
     void insertIntoLocalMap(const std::vector<LocalObject>& detections);
     /// Eq. costfunc cost of a same-class pair when the duplicate rules (MappingOptions) make it one
     /// object, else a value > 1.
-    double duplicateCost(const geometry::Box3D& o1, const world::NoiseModel& noise_o1, int class_id,
+    double duplicateCost(const geometry::Box3D& o1, const model::ObjectDistribution& p_o1, int class_id,
                          const geometry::Box3D& o2) const;
     void mergeLocalDuplicates();
     /// The floor-plan prior (MappingOptions wall_align): aligns the object's box to its wall.

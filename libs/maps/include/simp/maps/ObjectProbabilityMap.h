@@ -5,7 +5,7 @@
 /// max over the class's objects of p_o(c), and its argmax o_max cost O(1) per point.
 
 #include <simp/maps/GridGeometry.h>
-#include <simp/maps/ObjectDistribution.h>
+#include <simp/model/ObjectDistribution.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <cstdint>
@@ -62,7 +62,7 @@ class ObjectProbabilityMap {
         return m_classes.at(static_cast<std::size_t>(class_id)).objects;
     }
     /// Distribution of object o (valid only for objects listed by objectsOf()).
-    const ObjectDistribution& distribution(std::size_t o) const { return m_distributions.at(o); }
+    const model::ObjectDistribution& distribution(std::size_t o) const { return m_distributions.at(o); }
     const std::vector<int>& skippedClasses() const { return m_skipped_classes; }
     const Options& options() const { return m_options; }
     /// Bytes used by the rasters.
@@ -76,7 +76,7 @@ class ObjectProbabilityMap {
     };
     Options m_options;
     std::vector<ClassRaster> m_classes;              ///< per class id
-    std::vector<ObjectDistribution> m_distributions; ///< per object index
+    std::vector<model::ObjectDistribution> m_distributions; ///< per object index
     std::vector<int> m_skipped_classes;
 };
 

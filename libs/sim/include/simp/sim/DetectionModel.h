@@ -16,22 +16,16 @@
 
 namespace simp::sim {
 
-/// Yaw (rad) of the frame the class noise models are expressed in (Eq. shiftdist): y along the
-/// object's longer horizontal side, x along the shorter one. This is the convention of the authors'
-/// global_variance.csv (a board's large scale lies along its length whichever way it faces);
-/// the mapper uses the same (simp::mapping::noiseFrameYaw).
-double noiseFrameYaw(const geometry::Box3D& box);
-
 /// The centre-noise model used for object `o`: its own, else its class's, else an isotropic
 /// Gaussian of std default_noise_std_m.
-world::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p);
+model::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p);
 
 /// The centre noise of detections of `o` given its noise model `model` (noiseFor()): `model` itself
 /// unless p.noise_model_includes_extent; then, per axis i of the model's frame, the covariance
 /// of the model's shape (offsetCovariance()) minus the variance of a uniform footprint of the
 /// object along that axis (side^2 / 12), floored at (min_centre_noise_fraction * model std)^2,
 /// applied by scaling Sigma (the shape b and the mean mu are kept).
-world::NoiseModel centreNoiseOf(const world::NoiseModel& model, const world::MapObject& o, const DetectorParams& p);
+model::NoiseModel centreNoiseOf(const model::NoiseModel& model, const world::MapObject& o, const DetectorParams& p);
 
 /// An upright world box (local z up) as a camera-frame box with the detector's axis convention
 /// (Omni3D: size = (W, H, L), H along the box's y axis, which points down like the camera's y).
@@ -45,14 +39,14 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
 /// deviation's component along the horizontal viewing ray is scaled by distance /
 /// reference_distance_m (depth error of a monocular detector). At the reference distance the
 /// offset has the model's mean and covariance (offsetCovariance()).
-Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const world::NoiseModel& noise,
+Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const model::NoiseModel& noise,
                                     const DetectorParams& p, std::uint64_t noise_seed, Rng& rng);
 
 /// A detection of object `o` (true class `class_id` of `num_classes`): with probability
 /// detection_probability; centre = c_o + centreOffsetInWorld(), height, size and yaw perturbed;
 /// sometimes a wrong label. nullopt when missed or scored below min_confidence.
 std::optional<obs::Detection3D> detectObject(const camera::PinholeCamera& view, const world::MapObject& o,
-                                             const world::NoiseModel& noise, std::size_t num_classes,
+                                             const model::NoiseModel& noise, std::size_t num_classes,
                                              const DetectorParams& p, Rng& rng, std::uint64_t noise_seed = 0);
 
 /// A phantom box of a random class at a random free spot in the camera's view (line of sight

@@ -17,7 +17,7 @@ namespace simp::sim {
 /// `class_noise.csv` fitted on real Cube R-CNN detections (pixels of 0.05 m; mean = (mx, my),
 /// Sigma = diag(sx^2, sy^2), exponent b). Classes the authors did not model (door, box, chair,
 /// person) and unknown names get nullopt.
-std::vector<std::optional<world::NoiseModel>> officeClassNoise(const std::vector<std::string>& class_names);
+std::vector<std::optional<model::NoiseModel>> officeClassNoise(const std::vector<std::string>& class_names);
 
 /// A generated office: the world and the layout it came from (room types, door gaps).
 struct GeneratedOffice {

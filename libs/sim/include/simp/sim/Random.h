@@ -4,7 +4,7 @@
 /// top of its raw 64-bit output (the std:: distributions are implementation-defined, these are
 /// not), so a seed gives the same numbers with any standard library.
 
-#include <simp/world/NoiseModel.h>
+#include <simp/model/NoiseModel.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -41,10 +41,10 @@ class Rng {
 /// density exp(-0.5 m^b) with m the Mahalanobis distance for Sigma, shifted by mu
 /// (paper Eq. perclassdist; b = 2 is the Gaussian). Sampled exactly: the radius r in whitened
 /// space has 0.5 r^b ~ Gamma(2/b, 1), the direction is uniform.
-Eigen::Vector2d sampleCentreOffset(const world::NoiseModel& model, Rng& rng);
+Eigen::Vector2d sampleCentreOffset(const model::NoiseModel& model, Rng& rng);
 
 /// Covariance of sampleCentreOffset() for `model`: Sigma * E[r^2] / 2 with
 /// E[r^2] = 2^(2/b) Gamma(4/b) / Gamma(2/b) (equals Sigma for b = 2).
-Eigen::Matrix2d offsetCovariance(const world::NoiseModel& model);
+Eigen::Matrix2d offsetCovariance(const model::NoiseModel& model);
 
 }  // namespace simp::sim

@@ -3,7 +3,7 @@
 /// Fit of the per-class Gaussian p(c | l) = N(mu, Sigma) (Eq. perclassdist) to the object-frame
 /// offsets of matched predictions, with standard errors, and the 5 cm occurrence histogram.
 
-#include <simp/world/NoiseModel.h>
+#include <simp/model/NoiseModel.h>
 
 #include <Eigen/Core>
 #include <vector>
@@ -31,7 +31,7 @@ Histogram2D makeHistogram(const std::vector<Eigen::Vector2d>& samples, double ce
 
 /// A fitted noise model with its sample size and standard errors.
 struct NoiseFit {
-    world::NoiseModel model;             ///< mu (m), Sigma (m^2), b = 2 (Gaussian)
+    model::NoiseModel model;             ///< mu (m), Sigma (m^2), b = 2 (Gaussian)
     std::size_t n = 0;                   ///< samples used (after outlier rejection)
     std::size_t rejected = 0;            ///< samples rejected as outliers
     Eigen::Vector2d se_mean_m{Eigen::Vector2d::Zero()};   ///< SE(mu_i) = sqrt(Sigma_ii / n)

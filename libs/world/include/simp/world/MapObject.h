@@ -4,7 +4,8 @@
 /// the mapping counters.
 
 #include <simp/geometry/Box3D.h>
-#include <simp/world/NoiseModel.h>
+#include <simp/model/NoiseFrame.h>
+#include <simp/model/NoiseModel.h>
 
 #include <cstdint>
 #include <optional>
@@ -18,7 +19,10 @@ struct MapObject {
     int n_match = 1;            ///< detections merged into it
     int n_skip = 0;             ///< times it was active but not matched
     int room_id = 0;            ///< room id of its centre (0 = none)
-    std::optional<NoiseModel> noise;  ///< per-object noise (authors' global_variance.json); else the class's
+    std::optional<model::NoiseModel> noise;  ///< per-object noise (authors' global_variance.json); else the class's
+
+    /// Which noise model applies (ObjectMapData::noiseOf), hence its frame (model::noiseFrameYaw).
+    model::NoiseSource noiseSource() const { return noise ? model::NoiseSource::Object : model::NoiseSource::Class; }
 };
 
 }  // namespace simp::world

@@ -20,7 +20,7 @@ struct RoomInfo {
 
 struct ObjectMapData {
     std::vector<std::string> class_names;             ///< class id -> name
-    std::vector<std::optional<NoiseModel>> class_noise;  ///< per class id; empty = not modelled
+    std::vector<std::optional<model::NoiseModel>> class_noise;  ///< per class id; empty = not modelled
     std::vector<MapObject> objects;
     std::vector<RoomInfo> rooms;                      ///< optional room names (may be empty)
     std::vector<std::string> room_categories;         ///< optional ordered category list (may be empty)
@@ -28,7 +28,7 @@ struct ObjectMapData {
     /// Class id of `name`, or -1.
     int classId(const std::string& name) const;
     /// Noise of object o: its own, else its class's; nullopt when neither exists.
-    std::optional<NoiseModel> noiseOf(const MapObject& o) const;
+    std::optional<model::NoiseModel> noiseOf(const MapObject& o) const;
 };
 
 /// Reads / writes the project's object map file (JSON, documented in doc/formats.md).

@@ -1,8 +1,8 @@
-#include <simp/world/NoiseModel.h>
+#include <simp/model/NoiseModel.h>
 
 #include <cmath>
 
-namespace simp::world {
+namespace simp::model {
 
 bool NoiseModel::isValid() const {
     if (!mean_m.allFinite() || !cov_m2.allFinite() || !std::isfinite(exponent_b)) return false;
@@ -14,4 +14,4 @@ bool NoiseModel::isValid() const {
     return cov_m2(0, 0) > 0.0 && cov_m2(0, 0) * cov_m2(1, 1) - cov_m2(0, 1) * cov_m2(1, 0) > 0.0;
 }
 
-}  // namespace simp::world
+}  // namespace simp::model

@@ -1,10 +1,11 @@
 #pragma once
 /// \file NoiseModel.h
-/// Per-class detection noise of box centres on the ground (paper Sec. "Statistical Analysis").
+/// Per-class (or per-object) detection noise of box centres on the ground (paper Sec.
+/// "Statistical Analysis", Eq. perclassdist). Its frame is NoiseFrame.h's.
 
 #include <Eigen/Core>
 
-namespace simp::world {
+namespace simp::model {
 
 /// Distribution of a detected box centre around the true object centre, in the object's noise
 /// frame on the ground (NoiseFrame.h): for a class model, y along the object's longer horizontal
@@ -20,4 +21,4 @@ struct NoiseModel {
     bool isValid() const;
 };
 
-}  // namespace simp::world
+}  // namespace simp::model

@@ -1,5 +1,4 @@
-#include <simp/maps/ObjectDistribution.h>
-#include <simp/world/NoiseFrame.h>
+#include <simp/model/ObjectDistribution.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -8,16 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-namespace simp::maps {
+namespace simp::model {
 
-double noiseFrameYaw(const geometry::Box3D& box_world) { return world::classNoiseFrameYaw(box_world); }
-
-ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise) {
-    return makeObjectDistribution(box_world, noise, noiseFrameYaw(box_world));
-}
-
-ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise,
-                                          double noise_frame_yaw) {
+ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const NoiseModel& noise,
+                                          NoiseSource source) {
     if (!noise.mean_m.allFinite() || !noise.cov_m2.allFinite() || !std::isfinite(noise.exponent_b) ||
         noise.exponent_b <= 0.0)
         throw std::invalid_argument("noise model: mean, covariance and exponent b must be finite, b > 0");
@@ -26,7 +19,7 @@ ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, cons
         throw std::invalid_argument("noise model: covariance is not positive definite");
 
     // Eq. shiftdist: R_o = rotation into the object's noise frame, c_o = box centre on the ground.
-    const double yaw = noise_frame_yaw;
+    const double yaw = noiseFrameYaw(box_world, source);
     Eigen::Matrix2d R_o;
     R_o << std::cos(yaw), -std::sin(yaw), std::sin(yaw), std::cos(yaw);
     const Eigen::Matrix2d cov_world = R_o * sym * R_o.transpose();
@@ -60,4 +53,4 @@ double maxSlopeMahalanobis(double exponent_b) {
     return 0.5 * exponent_b * std::pow(m, exponent_b - 1.0) * std::exp(-0.5 * mb);
 }
 
-}  // namespace simp::maps
+}  // namespace simp::model

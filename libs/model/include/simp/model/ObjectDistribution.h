@@ -1,22 +1,24 @@
 #pragma once
 /// \file ObjectDistribution.h
-/// The detection-centre distribution of one map object, p_o(c | l) (paper Eq. shiftdist).
+/// The detection-centre distribution of one map object, p_o(c | l) (paper Eqs. perclassdist,
+/// shiftdist): the one implementation of the sensor model, the mapper's association cost and the
+/// statistics' tests.
 
 #include <simp/geometry/Box3D.h>
-#include <simp/world/NoiseModel.h>
+#include <simp/model/NoiseFrame.h>
+#include <simp/model/NoiseModel.h>
 
 #include <Eigen/Core>
 #include <cmath>
 
-namespace simp::maps {
+namespace simp::model {
 
 /// p_o(c) = exp(-0.5 * m(c)^b), m = Mahalanobis distance of the world point c to mu_o for Sigma_o.
 ///
 /// Eq. shiftdist: the class (or per-object) noise model, given in the object frame on the
 /// ground, is moved to the object: mu_o = R_o mu + c_o, Sigma_o = R_o Sigma R_o^T, with
 /// c_o the box centre on the ground (world, m) and R_o the 2D rotation into the object's noise
-/// frame (noiseFrameYaw: y along the longer horizontal side, the authors' convention, as the
-/// simulator and the mapper use it).
+/// frame (NoiseFrame.h).
 ///
 /// Unnormalized on purpose: the peak is exactly 1, so p_o is in [0, 1] and can be used as
 /// the association probability of Eq. combined (p_o p_g + (1 - p_o) eta). The normalized
@@ -47,19 +49,12 @@ struct ObjectDistribution {
     }
 };
 
-/// Yaw (rad, world) of the noise frame of Eq. shiftdist: the noise model's y axis is the box's
-/// longer horizontal side, x the shorter (box yaw + pi/2 when size.x > size.y, else the box yaw).
-/// The authors' global_variance.csv has every board's large scale along its length whichever way
-/// it faces; simp::sim::noiseFrameYaw and simp::mapping::noiseFrameYaw are the same rule.
-double noiseFrameYaw(const geometry::Box3D& box_world);
-
-/// Eq. shiftdist for a map object's box (world frame, canonical upright) and its noise model.
+/// Eq. shiftdist for a map object's box (world frame, canonical upright) and the noise model that
+/// applies to it, from `source` (its frame: NoiseFrame.h; an object's own noise is in its box
+/// frame, a class model in the class noise frame).
 /// Throws std::invalid_argument when the noise model is not valid (Sigma not SPD, b <= 0).
-ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise);
-/// Same with the noise model's frame given (yaw, rad): world::noiseFrameYawOf(object) picks it
-/// (an object's own noise is in its box frame, a class model in the class noise frame).
-ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const world::NoiseModel& noise,
-                                          double noise_frame_yaw);
+ObjectDistribution makeObjectDistribution(const geometry::Box3D& box_world, const NoiseModel& noise,
+                                          NoiseSource source);
 
 /// Mahalanobis radius m_s beyond which p_o < p_min: exp(-0.5 m_s^b) = p_min.
 double supportMahalanobisRadius(double exponent_b, double p_min);
@@ -68,4 +63,4 @@ double supportMahalanobisRadius(double exponent_b, double p_min);
 /// divided by sigma_min it bounds |grad p_o| in 1/m (used to bound raster errors).
 double maxSlopeMahalanobis(double exponent_b);
 
-}  // namespace simp::maps
+}  // namespace simp::model
