@@ -9,7 +9,8 @@ bin="$(cd "$1" && pwd)"; out="$2"; big="${3:-}"
 mkdir -p "$out"; cd "$out"
 row() {  # name file-or-dir command...
   local name="$1" input="$2" m; shift 2
-  m="$( { /usr/bin/time -f '%M %e %x' "$@" > /dev/null 2> /dev/null; } 2>&1 | tail -n 1)"
+  /usr/bin/time -o rss.tmp -f '%M %e %x' "$@" > /dev/null 2>&1 || true
+  m="$(tail -n 1 rss.tmp)"
   set -- $m
   local bytes; bytes="$(du -sb "$input" | cut -f1)"
   awk -v n="$name" -v b="$bytes" -v r="$1" -v base="$BASE" -v s="$2" -v x="$3" \

@@ -47,7 +47,7 @@ bool readsCleanly(const std::vector<std::uint8_t>& bytes) {
 TEST(ReaderMemory, HostileCountsKeepPeakRssWithinLinearBoundOfFileSize) {
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "ASan's quarantine keeps freed memory resident: peak RSS then counts every "
-                    "allocation of the 3700 reads, not the live memory this test bounds";
+                    "allocation of the 11 000 reads, not the live memory this test bounds";
 #endif
     const auto path = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "reader_memory" / "small.rawlog";
     std::filesystem::create_directories(path.parent_path());
