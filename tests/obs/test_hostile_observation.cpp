@@ -16,6 +16,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using ::testing::HasSubstr;
 using simp::obs::CObservationObjects3D;
@@ -225,6 +228,63 @@ TEST(HostileObservation, MrptMotionModelsAreGuarded) {
     Bytes scan = ok;
     put<std::uint32_t>(scan, method_at, 1u);  // scan matching, but a CPose2D follows
     EXPECT_THAT(readError(scan), HasSubstr("'mrpt::poses::CPose2D' where a pose PDF belongs"));
+}
+
+TEST(HostileObservation, MotionModelGuardMatchesClassNamesAsMrptDoes) {
+    // MRPT resolves stored class names ignoring the namespace; libFuzzer found "m,pt::obs::
+    // CActionRobotMovement2D" drawing 19.7 million Thrun particles past an exact-name guard
+    // (tests/data/fuzz_regressions/rawlog/thrun_namespace_19M_particles.rawlog, 831 bytes).
+    std::size_t method_at = 0, model_at = 0;
+    Bytes thrun = odometryThenFrame(method_at, model_at);
+    put<std::uint32_t>(thrun, model_at, 1u);
+    put<std::uint32_t>(thrun, model_at + 4 + 24, 19675492u);
+    Bytes renamed = thrun;
+    renamed[find(renamed, "mrpt::obs::CActionRobotMovement2D", 33) + 1] = ',';
+    EXPECT_THAT(readError(renamed), HasSubstr("19675492 Thrun motion-model particles"));
+    Bytes pose_renamed = thrun;
+    pose_renamed[find(pose_renamed, "mrpt::poses::CPose2D", 20)] = 'x';
+    EXPECT_THAT(readError(pose_renamed), HasSubstr("19675492 Thrun motion-model particles"));
+    Bytes not_a_pose = thrun;
+    not_a_pose[find(not_a_pose, "mrpt::poses::CPose2D", 20) + 19] = 'E';  // "...CPose2E"
+    EXPECT_THAT(readError(not_a_pose), HasSubstr("'mrpt::poses::CPose2E' where its odometry CPose2D belongs"));
+    Bytes any_model = thrun;  // MRPT takes every non-zero model selection as Thrun
+    put<std::uint32_t>(any_model, model_at, 0x04000000u);
+    EXPECT_THAT(readError(any_model), HasSubstr("motion model 67108864 is neither 0 (Gaussian) nor 1 (Thrun)"));
+}
+
+TEST(HostileObservation, ActionCollectionsAreBoundedAsAWhole) {
+    // 64 actions per collection at most, and 100000 Thrun particles for all its movements together.
+    std::size_t method_at = 0, model_at = 0;
+    Bytes many = odometryThenFrame(method_at, model_at);
+    const std::size_t count_at = find(many, "mrpt::obs::CActionCollection", 28) + 28 + 1;
+    put<std::uint32_t>(many, count_at, 65u);
+    EXPECT_THAT(readError(many), HasSubstr("CActionCollection holds 65 actions (at most 64"));
+    mrpt::obs::CActionCollection acts;
+    mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
+    opts.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
+    opts.thrunModel.nParticlesCount = 60000;  // each allowed alone
+    for (int i = 0; i < 2; ++i) {
+        mrpt::obs::CActionRobotMovement2D mv;
+        mv.computeFromOdometry(mrpt::poses::CPose2D(0.05, 0, 0.01), opts);
+        acts.insert(mv);
+    }
+    Bytes two = bytesOf(acts);
+    EXPECT_THAT(readError(two), HasSubstr("ask for 120000 Thrun motion-model particles together"));
+}
+
+TEST(HostileObservation, SavedFuzzFindingsAreRejectedQuickly) {
+    // Every input libFuzzer found (doc/fuzzing.md) is replayed: a clean rejection within seconds.
+    const auto dir = std::filesystem::path(SIMP_SOURCE_DIR) / "tests/data/fuzz_regressions/rawlog";
+    int n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        std::ifstream f(e.path(), std::ios::binary);
+        const Bytes b{std::istreambuf_iterator<char>(f), {}};
+        const auto start = std::chrono::steady_clock::now();
+        EXPECT_NE(readError(b), "") << e.path();
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0) << e.path();
+        ++n;
+    }
+    EXPECT_GE(n, 1);
 }
 
 TEST(HostileObservation, PlainArchivesStillHaveTheFixedMaxima) {

@@ -28,7 +28,16 @@ std::string plugin() { return std::string(SIMP_BINARY_DIR) + "/lib/libsimp_obs.s
 /// Runs a shell command, returns its exit status and captures stdout+stderr.
 int run(const std::string& cmd, std::string& output) {
     output.clear();
-    FILE* p = popen((cmd + " 2>&1").c_str(), "r");
+    std::string c = cmd;
+#ifdef SIMP_ASAN_RUNTIME
+    // ASan build: rawlog-edit (MRPT's, not instrumented) loads our instrumented plugin, so ASan's
+    // runtime is preloaded. Leak checking is off for MRPT's program; the plugin's memory errors abort.
+    const std::string tool = "rawlog-edit ";
+    const std::string with = std::string("LD_PRELOAD=") + SIMP_ASAN_RUNTIME +
+                             " ASAN_OPTIONS=detect_leaks=0:abort_on_error=1:halt_on_error=1 " + tool;
+    for (auto at = c.find(tool); at != std::string::npos; at = c.find(tool, at + with.size())) c.replace(at, tool.size(), with);
+#endif
+    FILE* p = popen((c + " 2>&1").c_str(), "r");
     if (!p) return -1;
     char buf[4096];
     while (std::fgets(buf, sizeof buf, p)) output += buf;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 
 namespace simp::obs {
@@ -60,9 +61,11 @@ namespace {
 /// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300, and a
 /// file cannot ask for more than this (MRPT 2.5 allocates 32 bytes per particle before any check).
 constexpr std::uint32_t kMaxThrunParticles = 100000;
-/// How far ahead of an action collection its robot movements are looked for (bytes): a collection
-/// holds a few actions of a few hundred bytes.
-constexpr std::size_t kActionScanBytes = 8192;
+/// How far ahead of an action collection its robot movements are looked for (bytes), and how many
+/// actions a collection may hold: a real one holds 1-3 actions of 100-400 bytes, so every robot
+/// movement of an accepted collection lies inside the window.
+constexpr std::size_t kActionScanBytes = 65536;
+constexpr std::uint32_t kMaxActionsPerCollection = 64;
 
 std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
     std::uint32_t v = 0;
@@ -70,57 +73,103 @@ std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
     return v;
 }
 
+/// MRPT resolves a stored class name ignoring its namespace (findRegisteredClass's
+/// allow_ignore_namespace, for pre-2.0 datasets): "x::CPose2D" and "CPose2D" both read as
+/// mrpt::poses::CPose2D. A guard must match names the same way (a fuzzed "m,pt::obs::..." got past
+/// an exact match and drew 19.7 million Thrun particles).
+bool resolvesTo(const std::string& stored, const std::string& cls) {
+    const auto sep = stored.rfind("::");
+    return (sep == std::string::npos ? stored : stored.substr(sep + 2)) == cls;
+}
+
+/// The object header at `at` (MRPT 2.x: byte 0x80|length, then the name): its name, or nullopt if
+/// `at` holds no new-format header within `b`.
+std::optional<std::string> objectNameAt(const std::vector<std::uint8_t>& b, std::size_t at) {
+    if (at >= b.size() || !(b[at] & 0x80)) return std::nullopt;
+    const std::size_t len = b[at] & 0x7f;
+    if (len == 0 || at + 1 + len > b.size()) return std::nullopt;
+    return std::string(reinterpret_cast<const char*>(b.data() + at + 1), len);
+}
+
 /// Checks the motion model of a CActionRobotMovement2D whose data (after its version byte) starts
 /// at `at` in `b` (MRPT 2.5, versions 4-7): u32 estimation method (1: a pose PDF object follows,
-/// MRPT's reader segfaults on another class there); for odometry (0) a CPose2D object
-/// (name byte 0x94, 20 name bytes, version 1, three doubles, end flag), u32 model selection
-/// (0 Gaussian, 1 Thrun), six floats, u32 Thrun particle count. Anything it cannot parse is left to
-/// MRPT's reader.
-void checkRobotMovement2D(const std::vector<std::uint8_t>& b, std::size_t at, const std::string& where) {
-    static const std::string pose = std::string(1, '\x94') + "mrpt::poses::CPose2D";
-    static const std::string pdf = "mrpt::poses::CPosePDF";
-    if (at + 4 > b.size()) return;
+/// MRPT's reader segfaults on another class there); for odometry (0) a CPose2D object (header,
+/// version 0: three floats, 1: three doubles, end flag), u32 model selection (0 Gaussian; MRPT
+/// takes any other value as Thrun), six floats, u32 Thrun particle count. Returns the particles
+/// MRPT will draw. A movement cut by the end of `b` is left to MRPT's reader (end of file).
+std::uint64_t checkRobotMovement2D(const std::vector<std::uint8_t>& b, std::size_t at, const std::string& where) {
+    if (at + 4 > b.size()) return 0;
     const std::uint32_t method = u32At(b, at);
     at += 4;
     if (method > 1)
         throw std::invalid_argument(where + ": CActionRobotMovement2D estimation method " + std::to_string(method) +
                                     " is neither 0 (odometry) nor 1 (scan matching) (corrupted file)");
-    if (method == 1) {  // a pose PDF object follows; MRPT 2.5 crashes on any other object there
-        if (at + 1 > b.size()) return;
-        const std::size_t len = b[at] & 0x7f;
-        if (at + 1 + len > b.size()) return;
-        const std::string name(reinterpret_cast<const char*>(b.data() + at + 1), len);
-        if (name.rfind(pdf, 0) != 0)
-            throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + name +
-                                        "' where a pose PDF belongs (corrupted file)");
-        return;
+    const auto name = objectNameAt(b, at);
+    if (!name) {
+        if (at < b.size() && at + 1 + (b[at] & 0x7f) <= b.size())
+            throw std::invalid_argument(where + ": CActionRobotMovement2D: no object where its " +
+                                        (method == 1 ? "pose PDF" : "odometry CPose2D") + " belongs (corrupted file)");
+        return 0;
     }
-    if (at + pose.size() + 1 + 24 + 1 + 4 > b.size() || std::memcmp(b.data() + at, pose.data(), pose.size()) != 0) return;
-    at += pose.size() + 1 + 24 + 1;  // name, version, x y phi, end flag
+    if (method == 1) {  // a pose PDF object follows; MRPT 2.5 crashes on any other object there
+        const auto sep = name->rfind("::");
+        if ((sep == std::string::npos ? *name : name->substr(sep + 2)).rfind("CPosePDF", 0) != 0)
+            throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + *name +
+                                        "' where a pose PDF belongs (corrupted file)");
+        return 0;
+    }
+    if (!resolvesTo(*name, "CPose2D"))
+        throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + *name +
+                                    "' where its odometry CPose2D belongs (corrupted file)");
+    at += 1 + name->size();
+    if (at >= b.size()) return 0;
+    const std::uint8_t pose_version = b[at];
+    if (pose_version > 1)
+        throw std::invalid_argument(where + ": CActionRobotMovement2D: odometry CPose2D version " +
+                                    std::to_string(pose_version) + " is unknown (corrupted file)");
+    at += 1 + (pose_version == 0 ? 12 : 24) + 1;  // version, x y phi, end flag
+    if (at + 4 > b.size()) return 0;
     const std::uint32_t model = u32At(b, at);
     if (model > 1)
         throw std::invalid_argument(where + ": CActionRobotMovement2D motion model " + std::to_string(model) +
                                     " is neither 0 (Gaussian) nor 1 (Thrun) (corrupted file)");
-    if (model == 0 || at + 4 + 24 + 4 > b.size()) return;
+    if (model == 0 || at + 4 + 24 + 4 > b.size()) return 0;
     const std::uint32_t particles = u32At(b, at + 4 + 24);
     if (particles > kMaxThrunParticles)
         throw std::invalid_argument(where + ": CActionRobotMovement2D asks for " + std::to_string(particles) +
                                     " Thrun motion-model particles (at most " + std::to_string(kMaxThrunParticles) +
                                     "; corrupted file)");
+    return particles;
 }
 
 }  // namespace
 
 void BoundedArchive::guardMotionModels() {
     // MRPT's CActionCollection reader deserializes its actions with MRPT's own reader, which a
-    // robot movement asks to draw its Thrun particles: check every robot movement ahead first.
-    static const std::string header = std::string(1, '\xa1') + "mrpt::obs::CActionRobotMovement2D";
+    // robot movement asks to draw its Thrun particles: check every robot movement ahead first,
+    // whatever namespace its stored name carries, and the particles of all of them together.
+    static const std::string cls = "CActionRobotMovement2D";
     const auto& b = peek(kActionScanBytes);
-    for (std::size_t at = 0; at + header.size() + 1 <= b.size(); ++at) {
-        if (b[at] != static_cast<std::uint8_t>(header[0]) || std::memcmp(b.data() + at, header.data(), header.size()) != 0) continue;
-        const std::uint8_t version = b[at + header.size()];
-        if (version >= 4 && version <= 7) checkRobotMovement2D(b, at + header.size() + 1, m_description);
+    if (b.size() >= 4 && u32At(b, 0) > kMaxActionsPerCollection)
+        throw std::invalid_argument(m_description + ": CActionCollection holds " + std::to_string(u32At(b, 0)) +
+                                    " actions (at most " + std::to_string(kMaxActionsPerCollection) +
+                                    "; corrupted file)");
+    std::uint64_t particles = 0;
+    for (std::size_t end = cls.size(); end <= b.size(); ++end) {
+        if (std::memcmp(b.data() + end - cls.size(), cls.data(), cls.size()) != 0) continue;
+        // The header's length byte sits right before the name, which ends here.
+        for (std::size_t len = cls.size(); len <= 127 && len < end; ++len) {
+            const std::size_t hdr = end - len - 1;
+            if (b[hdr] != (0x80 | len) || !resolvesTo(*objectNameAt(b, hdr), cls) || end >= b.size()) continue;
+            const std::uint8_t version = b[end];
+            if (version >= 4 && version <= 7) particles += checkRobotMovement2D(b, end + 1, m_description);
+            break;
+        }
     }
+    if (particles > kMaxThrunParticles)
+        throw std::invalid_argument(m_description + ": the robot movements of one CActionCollection ask for " +
+                                    std::to_string(particles) + " Thrun motion-model particles together (at most " +
+                                    std::to_string(kMaxThrunParticles) + "; corrupted file)");
 }
 
 void BoundedArchive::guardCounts(const std::string& class_name, int version) {

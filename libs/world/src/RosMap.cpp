@@ -130,26 +130,19 @@ void loadRosMap(const std::string& yaml_path, mrpt::maps::COccupancyGridMap2D& g
     checkRasterSize(m.image_path, {static_cast<std::uint64_t>(img.cols), static_cast<std::uint64_t>(img.rows)});
     if (img.depth() == CV_16U) img.convertTo(img, CV_8U, 1.0 / 257.0);
     if (img.depth() != CV_8U) fail(m.image_path, "expected an 8-bit or 16-bit image");
-    // map_server averages the colour channels (alpha ignored here).
-    cv::Mat grey;
-    if (img.channels() == 1) {
-        img.convertTo(grey, CV_64F);
-    } else if (img.channels() == 3 || img.channels() == 4) {
-        std::vector<cv::Mat> ch;
-        cv::split(img, ch);
-        grey = cv::Mat::zeros(img.size(), CV_64F);
-        for (int c = 0; c < 3; ++c) cv::accumulate(ch[static_cast<std::size_t>(c)], grey);
-        grey /= 3.0;
-    } else {
-        fail(m.image_path, "unsupported number of channels");
-    }
-    const int rows = grey.rows, cols = grey.cols;
+    // map_server averages the colour channels (alpha ignored here). Read per pixel from the 8-bit
+    // image: a double copy of the raster cost 8 bytes/px (200 MB for a 35 KB PNG of 25 Mpx).
+    const int nch = img.channels();
+    if (nch != 1 && nch != 3 && nch != 4) fail(m.image_path, "unsupported number of channels");
+    const int rows = img.rows, cols = img.cols;
     setGridExactly(grid, m.origin_x_m, m.origin_y_m, static_cast<unsigned>(cols), static_cast<unsigned>(rows),
                    m.resolution_m, 0.5f);
     for (int r = 0; r < rows; ++r) {
         const int cy = rows - 1 - r;
+        const uchar* row = img.ptr<uchar>(r);
         for (int c = 0; c < cols; ++c) {
-            const double v = grey.at<double>(r, c);
+            const uchar* px = row + static_cast<std::ptrdiff_t>(c) * nch;
+            const double v = nch == 1 ? double(px[0]) : (double(px[0]) + double(px[1]) + double(px[2])) / 3.0;
             const double p = m.negate ? v / 255.0 : (255.0 - v) / 255.0;  // occupancy probability
             float occ = 0.5f;
             if (p > m.occupied_thresh) occ = 1.0f;
