@@ -1,7 +1,6 @@
 #include <simp/localization/ParticleSummary.h>
 
 #include <simp/localization/Angle.h>
-#include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <cmath>
