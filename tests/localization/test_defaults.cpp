@@ -161,6 +161,7 @@ void expectSame(const simp::maps::CObjectMap::TLikelihoodOptions& a,
     SIMP_EXPECT_SAME(sensor_model);
     EXPECT_TRUE(a.modelParams() == b.modelParams()) << "eta, m_p, skip_classes_without_noise, edt_*, noise range";
     SIMP_EXPECT_SAME(skip_classes_without_noise);
+    SIMP_EXPECT_SAME(unmodelled_noise_std_m);
     SIMP_EXPECT_SAME(noise_reference_range_m);
     SIMP_EXPECT_SAME(default_confidence_threshold);
     for (const auto& name : simp::obs::defaultClassNames()) EXPECT_EQ(a.thresholdOf(name), b.thresholdOf(name)) << name;
@@ -214,7 +215,8 @@ TEST(LocalizeDefaults, CompiledInDefaultsEqualSimpIniFieldByField) {
 }
 
 TEST(LocalizeDefaults, WithoutConfigTheBuiltInOfficeLocalizesAsWithSimpIni) {
-    // The office has doors, a class without a noise model: the defaults must skip it, as simp.ini does.
+    // The office has doors and chairs, classes without a noise model: the defaults must score them
+    // as simp.ini does (unmodelled_noise_std_m).
     LocalizeApp plain, with_ini;
     test::runApp(plain, officeArgs(test::freshOutputDir("defaults_plain")));
     auto args = officeArgs(test::freshOutputDir("defaults_ini"));

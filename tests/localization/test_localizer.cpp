@@ -256,3 +256,36 @@ TEST(FitWindow, CountsObjectsOnceWithAnObjectRadius) {
     EXPECT_EQ(wrong.recent_scored, 2u);
     EXPECT_DOUBLE_EQ(wrong.recent_fraction, 0.0);
 }
+
+TEST(FitWindow, KeepsOnlyDetectionsTheSensorModelCanScore) {
+    // A class without noise model (chair: object 1) is skipped by the simp model; its detections
+    // must not take the window's slots (they did: twelve of them pushed every scorable one out).
+    auto w = makeWorld();
+    const int chair = w.objects.classId("chair");
+    ASSERT_GE(chair, 0);
+    w.objects.class_noise[static_cast<std::size_t>(chair)].reset();
+    auto map = std::make_shared<simp::maps::CObjectMap>();
+    map->likelihoodOptions.skip_classes_without_noise = true;
+    map->setData(w.objects);
+    ASSERT_EQ(map->likelihoodOptions.unmodelled_noise_std_m, 0.0);  // the plugin's default: the paper's
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo(10, 10, 0);
+    StateParams p;
+    p.fit_window = 12;
+    FitWindow fit(p);
+    fit.add(*map, observe(w, robot, {0, 2, 3, 4, 5}), odo, 0.0);
+    for (int k = 0; k < 12; ++k) fit.add(*map, observe(w, robot, {1}), odo, 0.1 + 0.01 * k);
+    EXPECT_EQ(fit.size(), 5u);
+    EXPECT_EQ(fit.evaluate(*map, mrpt::poses::CPose2D(robot), odo, 0.3).scored, 5u);
+    EXPECT_EQ(map->usableClassOf(*observe(w, robot, {1}), 0), -1);
+
+    // Scored with an isotropic model instead: the chair counts, and the window fills with it.
+    map->likelihoodOptions.unmodelled_noise_std_m = 0.3;
+    EXPECT_EQ(map->usableClassOf(*observe(w, robot, {1}), 0), chair);
+    FitWindow with_chairs(p);
+    with_chairs.add(*map, observe(w, robot, {0, 2, 3, 4, 5}), odo, 0.0);
+    for (int k = 0; k < 12; ++k) with_chairs.add(*map, observe(w, robot, {1}), odo, 0.1 + 0.01 * k);
+    const auto f = with_chairs.evaluate(*map, mrpt::poses::CPose2D(robot), odo, 0.3);
+    EXPECT_EQ(f.scored, 12u);
+    EXPECT_DOUBLE_EQ(f.fraction, 1.0);  // exact boxes at the true pose: every chair detection explained
+}

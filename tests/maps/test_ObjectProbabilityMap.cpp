@@ -121,5 +121,29 @@ TEST(ObjectProbabilityMap, ClassWithoutNoiseIsAnErrorOrSkipped) {
     EXPECT_NO_THROW(ObjectProbabilityMap(data, {}));
 }
 
+TEST(ObjectProbabilityMap, UnmodelledClassGetsTheIsotropicDefault) {
+    auto data = test::smallMap();
+    const int door = data.classId("door");
+    data.class_noise[static_cast<std::size_t>(door)].reset();
+    ObjectProbabilityMap::Options opt;
+    opt.unmodelled_noise_std_m = 0.3;  // no skip needed: nothing is unmodelled any more
+    const ObjectProbabilityMap mp(data, opt);
+    ASSERT_TRUE(mp.hasClass(door));
+    EXPECT_TRUE(mp.skippedClasses().empty());
+    for (const std::int32_t o : mp.objectsOf(door)) {
+        const auto& d = mp.distribution(static_cast<std::size_t>(o));
+        // Zero mean shift, 0.3 m in every direction: the density is the same 0.3 m off the centre
+        // along x and along y, and half its peak at 0.3 * sqrt(2 ln 2) m (a Gaussian, b = 2).
+        const Eigen::Vector2d c = d.mean_world_m;
+        const double peak = d.probability(c.x(), c.y());
+        EXPECT_NEAR(d.probability(c.x() + 0.3, c.y()), d.probability(c.x(), c.y() + 0.3), 1e-12);
+        EXPECT_NEAR(d.probability(c.x() + 0.3 * std::sqrt(2.0 * std::log(2.0)), c.y()) / peak, 0.5, 1e-9);
+        EXPECT_NEAR(d.sigma_x_m, 0.3, 1e-12);
+        EXPECT_NEAR(d.sigma_y_m, 0.3, 1e-12);
+    }
+    opt.unmodelled_noise_std_m = -0.1;
+    EXPECT_THROW(ObjectProbabilityMap(data, opt), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace simp::maps

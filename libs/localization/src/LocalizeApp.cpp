@@ -60,6 +60,7 @@ class RecordingOutput : public TCLAP::StdOutput {
 maps::CObjectMap::TLikelihoodOptions defaultLikelihoodOptions() {
     maps::CObjectMap::TLikelihoodOptions o;
     o.skip_classes_without_noise = true;
+    o.unmodelled_noise_std_m = 0.3;
     return o;
 }
 

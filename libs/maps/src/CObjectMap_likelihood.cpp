@@ -38,7 +38,10 @@ int CObjectMap::usableClassOf(const simp::obs::CObservationObjects3D& obs, std::
     const std::string& name = obs.classNameOf(det);
     // Compared in the detector's single precision, so "0.7" in the .ini admits a 0.7f score.
     if (det.confidence < static_cast<float>(likelihoodOptions.thresholdOf(name))) return -1;  // under threshold
-    return m_data.classId(name);                                          // -1: class not in the map
+    const int cls = m_data.classId(name);
+    // A class the sensor model cannot score (simp and d: no noise model) is ignored like an unknown
+    // one, so that everything counting detections (the state's fit window) counts the same ones.
+    return sensorModel()->scoresClass(cls) ? cls : -1;
 }
 
 std::size_t CObjectMap::prepareDetections(const SensorModel& model, const simp::obs::CObservationObjects3D& obs,

@@ -30,6 +30,10 @@ void CObjectMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CCon
     MRPT_LOAD_CONFIG_VAR(mp_resolution_m, double, source, section);
     MRPT_LOAD_CONFIG_VAR(mp_min_probability, double, source, section);
     MRPT_LOAD_CONFIG_VAR(skip_classes_without_noise, bool, source, section);
+    MRPT_LOAD_CONFIG_VAR(unmodelled_noise_std_m, double, source, section);
+    if (!(unmodelled_noise_std_m >= 0.0 && std::isfinite(unmodelled_noise_std_m)))
+        throw std::invalid_argument("[" + section + "] unmodelled_noise_std_m = " + std::to_string(unmodelled_noise_std_m) +
+                                    " must be >= 0 (0 = off)");
     MRPT_LOAD_CONFIG_VAR(edt_sigma_m, double, source, section);
     MRPT_LOAD_CONFIG_VAR(edt_max_distance_m, double, source, section);
     MRPT_LOAD_CONFIG_VAR(edt_resolution_m, double, source, section);
@@ -57,6 +61,7 @@ void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
     LOADABLEOPTS_DUMP_VAR(mp_resolution_m, double);
     LOADABLEOPTS_DUMP_VAR(mp_min_probability, double);
     LOADABLEOPTS_DUMP_VAR(skip_classes_without_noise, bool);
+    LOADABLEOPTS_DUMP_VAR(unmodelled_noise_std_m, double);
     LOADABLEOPTS_DUMP_VAR(edt_sigma_m, double);
     LOADABLEOPTS_DUMP_VAR(edt_max_distance_m, double);
     LOADABLEOPTS_DUMP_VAR(edt_resolution_m, double);
@@ -75,6 +80,7 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     p.mp.resolution_m = mp_resolution_m;
     p.mp.min_probability = mp_min_probability;
     p.mp.skip_classes_without_noise = skip_classes_without_noise;
+    p.mp.unmodelled_noise_std_m = unmodelled_noise_std_m;
     p.edt_sigma_m = edt_sigma_m;
     p.edt_max_distance_m = edt_max_distance_m;
     p.edt_resolution_m = edt_resolution_m;

@@ -20,6 +20,8 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
     : m_options(options) {
     if (!(options.resolution_m > 0.0) || !std::isfinite(options.resolution_m))
         throw std::invalid_argument("object probability map: resolution must be > 0 m");
+    if (!(options.unmodelled_noise_std_m >= 0.0) || !std::isfinite(options.unmodelled_noise_std_m))
+        throw std::invalid_argument("object probability map: unmodelled_noise_std_m must be >= 0 m (0 = none)");
     const std::size_t num_classes = data.class_names.size();
     m_classes.resize(num_classes);
     m_distributions.resize(data.objects.size());
@@ -31,7 +33,11 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
         if (obj.class_id < 0 || static_cast<std::size_t>(obj.class_id) >= num_classes)
             throw std::invalid_argument("object map: " + objectWhere(data, i) + " has class id " +
                                         std::to_string(obj.class_id) + " outside the class list");
-        const auto noise = data.noiseOf(obj);
+        auto noise = data.noiseOf(obj);
+        if (!noise && options.unmodelled_noise_std_m > 0.0) {
+            noise = model::NoiseModel{};
+            noise->cov_m2 = Eigen::Matrix2d::Identity() * options.unmodelled_noise_std_m * options.unmodelled_noise_std_m;
+        }
         const std::string& cls = data.class_names[static_cast<std::size_t>(obj.class_id)];
         if (!noise) {
             if (!options.skip_classes_without_noise)

@@ -92,14 +92,16 @@ SensorModel::SensorModel(const world::ObjectMapData& data, const SensorModelPara
         m_edt = EdtMap(m_footprints, params.edt_resolution_m, params.edt_max_distance_m);
 }
 
+bool SensorModel::scoresClass(int map_class) const {
+    if (map_class < 0 || static_cast<std::size_t>(map_class) >= m_footprints.class_objects.size()) return false;
+    return needsProbabilityMap(m_params.type) ? m_mp.hasClass(map_class)
+                                              : !m_footprints.class_objects[static_cast<std::size_t>(map_class)].empty();
+}
+
 std::optional<PreparedDetection> SensorModel::prepare(int map_class, const geometry::Box3D& box_in_robot,
                                                       const geometry::ConvexPolygon& footprint_in_robot,
                                                       double weight) const {
-    if (map_class < 0 || static_cast<std::size_t>(map_class) >= m_footprints.class_objects.size()) return std::nullopt;
-    const bool usable = needsProbabilityMap(m_params.type)
-                            ? m_mp.hasClass(map_class)
-                            : !m_footprints.class_objects[static_cast<std::size_t>(map_class)].empty();
-    if (!usable) return std::nullopt;
+    if (!scoresClass(map_class)) return std::nullopt;
     PreparedDetection d;
     d.map_class = map_class;
     d.center_robot_m = box_in_robot.center.head<2>();

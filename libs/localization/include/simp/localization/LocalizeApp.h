@@ -74,8 +74,9 @@ class LocalizeApp {
 };
 
 /// The object map's likelihood options of simp-localize without --config: config_ini/simp.ini's
-/// (the map's own defaults except skip_classes_without_noise = true, so that a class without a
-/// noise model, e.g. the built-in office's doors, is ignored rather than an error).
+/// (the map's own defaults except skip_classes_without_noise = true and unmodelled_noise_std_m = 0.3:
+/// a class without a noise model, e.g. the built-in office's doors and chairs, is scored with a
+/// 0.3 m isotropic model rather than being an error; doc/localization.md "Unmodelled classes").
 maps::CObjectMap::TLikelihoodOptions defaultLikelihoodOptions();
 
 /// The object map: from the .ini's [MetricMap] (MRPT's TSetOfMetricMapInitializers, which can create

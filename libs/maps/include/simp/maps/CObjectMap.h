@@ -73,6 +73,10 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         double mp_resolution_m = 0.05;     ///< m_p raster cell (m)
         double mp_min_probability = 1e-4;  ///< m_p support: p_o below this counts as 0
         bool skip_classes_without_noise = false;  ///< true: ignore such classes instead of throwing
+        /// > 0: an object without noise model (its own or its class's) gets an isotropic Gaussian
+        /// of this std (m) instead of being skipped; 0 = none (the paper). Not serialized (like
+        /// noise_reference_range_m): it comes from the .ini.
+        double unmodelled_noise_std_m = 0.0;
         double edt_sigma_m = 0.3;          ///< EDT baseline: std. dev. of the centre distance (m)
         double edt_max_distance_m = 2.0;   ///< EDT baseline: distance clamp (m)
         double edt_resolution_m = 0.05;    ///< EDT baseline: raster cell (m)
@@ -118,7 +122,7 @@ class CObjectMap : public mrpt::maps::CMetricMap {
                                   std::size_t n, double* sum_log, std::size_t& used,
                                   const double* weights = nullptr) const;
     /// Map class id of detection k of `obs`, or -1 when it is ignored (under its class threshold,
-    /// class not in the map).
+    /// class not in the map, or a class the sensor model cannot score).
     int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
 
     /// The precomputed model for the current data and likelihoodOptions (built on demand).

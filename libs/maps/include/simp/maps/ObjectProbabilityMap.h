@@ -19,6 +19,9 @@ class ObjectProbabilityMap {
         double resolution_m = 0.05;       ///< raster cell side (m)
         double min_probability = 1e-4;    ///< support: cells where every p_o < this store "no object"
         bool skip_classes_without_noise = false;  ///< false: a class lacking a noise model is an error
+        /// > 0: an object with neither its own nor its class's noise model gets an isotropic
+        /// Gaussian of this std (m) instead (then skip_classes_without_noise does not apply).
+        double unmodelled_noise_std_m = 0.0;
     };
 
     /// The result of Eq. globaldist at a point.

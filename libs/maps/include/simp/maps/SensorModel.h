@@ -42,6 +42,9 @@ class SensorModel {
     const SensorModelParams& params() const { return m_params; }
     /// True when the map has no object usable by the selected model.
     bool empty() const { return m_num_usable_objects == 0; }
+    /// True when the map has an object of class `map_class` this model can score a detection
+    /// against (simp and d skip a class without noise model; see ObjectProbabilityMap).
+    bool scoresClass(int map_class) const;
 
     /// Prepares a detection of map class `map_class` (box and footprint in the robot frame) whose
     /// log-likelihood is taken `weight` times (1 = the paper's). std::nullopt when the class has no
