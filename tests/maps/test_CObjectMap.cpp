@@ -9,7 +9,6 @@
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <mrpt/serialization/CArchive.h>
 #include <simp/maps/CObjectMap.h>
-#include <simp/mapping/ObjectMapBuilder.h>
 
 #include "TestMaps.h"
 
@@ -250,50 +249,6 @@ TEST(CObjectMap, OtherObservationsAreNeutral) {
     EXPECT_FALSE(map.canComputeObservationLikelihood(odo));
     EXPECT_EQ(map.computeObservationLikelihood(odo, mrpt::poses::CPose3D()), 0.0);
     EXPECT_FALSE(map.insertObservation(odo));
-    EXPECT_EQ(map.size(), 5u);
-}
-
-TEST(CObjectMap, InsertObservationBuildsTheMapWithLibsMapping) {
-    // Detections of a table and a cabinet (classes the default mapping filters accept within
-    // 1..4.5 m), seen twice from the same pose, into an empty map.
-    const auto gt = test::smallMap();
-    const TPose2D truth(1.0, 0.5, 0.4);
-    const auto o = test::detect(gt, truth, {1, 2}, 0.95f);
-    CObjectMap map;
-    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
-    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
-    ASSERT_NE(map.mapBuilder(), nullptr);
-    map.flushInsertions();  // integrate the local map now (no d_xy / d_theta motion happened)
-    // Two detections each: tentative objects (min_confirmed_matches = 3), not yet map content.
-    EXPECT_EQ(map.mapBuilder()->map().objects.size(), 2u);
-    EXPECT_EQ(map.size(), 0u);
-    // Confirmed from two detections in one window on: the same insertions make the map content.
-    CObjectMap map2;
-    map2.insertionOptions.mapping.min_confirmed_matches = 2;
-    map2.insertionOptions.mapping.min_confirmed_windows = 1;
-    EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
-    EXPECT_TRUE(map2.insertObservation(o, test::pose3D(truth)));
-    map2.flushInsertions();
-    ASSERT_EQ(map2.size(), 2u);
-    for (const auto& obj : map2.data().objects) {
-        const auto& name = map2.data().class_names.at(static_cast<std::size_t>(obj.class_id));
-        const auto& expected = gt.objects[name == "table" ? 1 : 2].box;
-        EXPECT_LT((obj.box.center - expected.center).norm(), 1e-6) << name;
-        EXPECT_EQ(obj.n_match, 2) << name;
-    }
-}
-
-TEST(CObjectMap, InsertingIntoALoadedMapKeepsItsObjects) {
-    // A ground-truth map (one "detection" per object) updated by detections: its objects are
-    // content, not tentative objects of the builder (min_confirmed_matches applies to new ones).
-    const auto gt = test::smallMap();
-    ASSERT_EQ(gt.objects.size(), 5u);
-    CObjectMap map;
-    map.setData(gt);
-    const TPose2D truth(1.0, 0.5, 0.4);
-    const auto o = test::detect(gt, truth, {1, 2}, 0.95f);
-    EXPECT_TRUE(map.insertObservation(o, test::pose3D(truth)));
-    map.flushInsertions();
     EXPECT_EQ(map.size(), 5u);
 }
 

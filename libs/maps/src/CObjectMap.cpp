@@ -105,7 +105,7 @@ CObjectMap& CObjectMap::operator=(const CObjectMap& other) {
     std::lock_guard<std::mutex> lock(m_cache_mutex);
     m_model = model;
     m_warned_empty = false;
-    m_builder.reset();  // mapping state is not copied
+    m_inserter.reset();  // mapping state is not copied
     return *this;
 }
 
@@ -117,7 +117,7 @@ void CObjectMap::setData(const simp::world::ObjectMapData& data) {
     m_data = data;
     m_model = std::move(model);
     m_warned_empty = false;
-    m_builder.reset();  // the next insertion starts from the new content
+    m_inserter.reset();  // the next insertion starts from the new content
 }
 
 void CObjectMap::internal_clear() {

@@ -1,6 +1,8 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/StrictIni.h>
 #include <simp/maps/CObjectMap.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <stdexcept>
@@ -88,14 +90,69 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     return p;
 }
 
+CObjectMap::TInsertionOptions::TInsertionOptions() {
+    if (const auto factory = objectMapInserterFactory()) algorithm = factory->makeOptions();
+}
+
+CObjectMap::TInsertionOptions::TInsertionOptions(const TInsertionOptions& other)
+    : mrpt::config::CLoadableOptions(other),
+      algorithm(other.algorithm ? other.algorithm->clone() : nullptr),
+      kept_section(other.kept_section),
+      kept_keys(other.kept_keys) {}
+
+CObjectMap::TInsertionOptions& CObjectMap::TInsertionOptions::operator=(const TInsertionOptions& other) {
+    if (this == &other) return *this;
+    mrpt::config::CLoadableOptions::operator=(other);
+    algorithm = other.algorithm ? other.algorithm->clone() : nullptr;
+    kept_section = other.kept_section;
+    kept_keys = other.kept_keys;
+    return *this;
+}
+
 void CObjectMap::TInsertionOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                                        const std::string& section) {
-    mapping.loadFromConfigFile(source, section);
+    if (!algorithm)
+        if (const auto factory = objectMapInserterFactory()) algorithm = factory->makeOptions();
+    if (algorithm) {
+        algorithm->loadFromConfigFile(source, section);
+        return;
+    }
+    // No algorithm to know the keys: keep them for resolve() (loading a key again replaces its value).
+    std::vector<std::string> names;
+    source.getAllKeys(section, names);
+    if (names.empty()) return;
+    kept_section = section;
+    for (const auto& name : names) {
+        std::string value = source.read_string(section, name, "", false);
+        const auto same = [&](const auto& kv) { return kv.first == name; };
+        const auto it = std::find_if(kept_keys.begin(), kept_keys.end(), same);
+        if (it != kept_keys.end()) it->second = std::move(value);
+        else kept_keys.emplace_back(name, std::move(value));
+    }
+}
+
+const ObjectMapInserterOptions& CObjectMap::TInsertionOptions::resolve(const ObjectMapInserterFactory& factory) {
+    if (!algorithm) algorithm = factory.makeOptions();
+    if (!kept_keys.empty()) {
+        // Read as the .ini would have been, strictly: the algorithm's reads are the known keys.
+        std::string text = "[" + kept_section + "]\n";
+        for (const auto& [name, value] : kept_keys) text += name + " = " + value + "\n";
+        const io::StrictIni ini(text, "semanticObjectMap insertion options");
+        ini.loadChecked([&](const io::StrictIni& c) { algorithm->loadFromConfigFile(c, kept_section); });
+        kept_keys.clear();
+        kept_section.clear();
+    }
+    return *algorithm;
 }
 
 void CObjectMap::TInsertionOptions::dumpToTextStream(std::ostream& out) const {
     out << "\n----------- [simp::maps::CObjectMap::TInsertionOptions] ------------\n\n";
-    mapping.dumpToTextStream(out);
+    if (algorithm) {
+        algorithm->dumpToTextStream(out);
+        return;
+    }
+    out << "(no map construction loaded: libsimp_mapping.so reads these keys when insertion starts)\n";
+    for (const auto& [name, value] : kept_keys) out << name << " = " << value << "\n";
 }
 
 }  // namespace simp::maps

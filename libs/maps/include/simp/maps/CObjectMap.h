@@ -6,9 +6,9 @@
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/math/TPose2D.h>
 #include <simp/maps/ConfidenceThresholds.h>
+#include <simp/maps/ObjectMapInserter.h>
 #include <simp/maps/SensorModel.h>
 #include <simp/maps/SensorModelTypes.h>
-#include <simp/mapping/MappingOptions.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/ObjectMapData.h>
 
@@ -16,10 +16,8 @@
 #include <mutex>
 #include <optional>
 #include <string>
-
-namespace simp::mapping {
-class ObjectMapBuilder;
-}
+#include <utility>
+#include <vector>
 
 namespace simp::maps {
 
@@ -90,21 +88,38 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         SensorModelParams modelParams() const;
     } likelihoodOptions;
 
-    /// [<prefix>_insertOpts]: the options of the mapping algorithm (simp::mapping::MappingOptions,
-    /// keys documented in doc/mapping.md), used by insertObservation().
+    /// [<prefix>_insertOpts]: the options of the map construction insertObservation() runs
+    /// (ObjectMapInserter.h): with libsimp_mapping.so loaded, simp::mapping::MappingOptions (keys in
+    /// doc/mapping.md). A value: copies of the options do not share state.
     struct TInsertionOptions : public mrpt::config::CLoadableOptions {
+        /// The registered algorithm's defaults (none when no algorithm is registered yet).
+        TInsertionOptions();
+        TInsertionOptions(const TInsertionOptions& other);
+        TInsertionOptions& operator=(const TInsertionOptions& other);
+        /// With an algorithm registered, its options read the section: its keys are the known ones
+        /// (io::StrictIni rejects the others) and a bad value throws. Without one, the section's
+        /// keys are kept as text and read by the algorithm when insertion starts.
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
-        simp::mapping::MappingOptions mapping;
+        /// The options `factory`'s runs take: `algorithm`, made first when absent, with the kept
+        /// keys read into it (an unknown key throws, as io::StrictIni does).
+        const ObjectMapInserterOptions& resolve(const ObjectMapInserterFactory& factory);
+
+        /// The registered algorithm's options; nullptr when none was registered when these were
+        /// made or loaded.
+        std::unique_ptr<ObjectMapInserterOptions> algorithm;
+        /// Without an algorithm: the section that was loaded and its keys (name, value) as text.
+        std::string kept_section;
+        std::vector<std::pair<std::string, std::string>> kept_keys;
     } insertionOptions;
 
-    /// @name Map construction (paper Sec. "3D Semantic Map Construction", libs/mapping)
+    /// @name Map construction (paper Sec. "3D Semantic Map Construction": libs/mapping registers it)
     /// @{
-    /// Integrates the builder's pending local map into the map now (insertObservation()
-    /// integrates only when the robot moved d_xy or turned d_theta, as the paper does).
+    /// Integrates the pending local map into the map now (insertObservation() integrates only
+    /// when the robot moved d_xy or turned d_theta, as the paper does).
     void flushInsertions();
-    /// The builder used by insertObservation(), or nullptr before the first insertion.
-    const simp::mapping::ObjectMapBuilder* mapBuilder() const { return m_builder.get(); }
+    /// The run used by insertObservation(), or nullptr before the first insertion.
+    const ObjectMapInserter* inserter() const { return m_inserter.get(); }
     /// @}
 
     /// @name Sensor model
@@ -167,16 +182,15 @@ class CObjectMap : public mrpt::maps::CMetricMap {
                                   std::size_t& first, PreparedDetection* out, std::size_t cap,
                                   const double* weights) const;
     void warnEmptyOnce() const;
-    /// Copies the builder's map into m_data when it changed; the model is rebuilt lazily.
-    void syncFromBuilder();
+    /// Copies the inserter's map into m_data when it changed; the model is rebuilt lazily.
+    void syncFromInserter();
 
     simp::world::ObjectMapData m_data;
     mutable std::mutex m_cache_mutex;
     mutable std::shared_ptr<const SensorModel> m_model;  ///< built for m_data and m_model->params()
     mutable bool m_warned_empty = false;
-    /// Mapping state (local map, counters); reset by setData() and not copied with the map.
-    std::shared_ptr<simp::mapping::ObjectMapBuilder> m_builder;
-    std::size_t m_synced_integrations = 0;  ///< builder integrations already copied into m_data
+    /// Map construction state (local map, counters); reset by setData() and not copied with the map.
+    std::unique_ptr<ObjectMapInserter> m_inserter;
 };
 
 /// Applies a class list to a map: objects of other classes are dropped, class ids and class

@@ -1,7 +1,7 @@
-// What RawLogViewer 2.5.8's "map from odometry" dialog (CFormRawMap.cpp) does with the plugin:
-// a CMultiMetricMap from the dialog's [map] text, sensory frames inserted at their poses
-// (insertObservationsInto), theMap.getVisualization() drawn.
-#include "TestMaps.h"
+// What RawLogViewer 2.5.8's "map from odometry" dialog (CFormRawMap.cpp) does with the plugins
+// (RawLogViewer -l libsimp_mapping.so): a CMultiMetricMap from the dialog's [map] text, sensory
+// frames inserted at their poses (insertObservationsInto), theMap.getVisualization() drawn.
+#include "maps/TestMaps.h"
 
 #include <simp/maps/CObjectMap.h>
 
