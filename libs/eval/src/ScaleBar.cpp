@@ -39,8 +39,10 @@ ScaleBar drawScaleBar(Canvas& canvas) {
     std::ostringstream label;
     label << "scale: " << bar.length_m << " m";
     cv::putText(canvas.image, label.str(), {x0, top + 16}, cv::FONT_HERSHEY_SIMPLEX, 0.5, ink, 1, cv::LINE_AA);
-    cv::line(canvas.image, bar.from, bar.to, ink, 3);
-    for (const cv::Point& end : {bar.from, bar.to}) cv::line(canvas.image, end + cv::Point(0, -5), end + cv::Point(0, 4), ink, 2);
+    // Rectangles, not thick lines (whose caps overshoot): the ink spans columns [from.x, to.x] exactly.
+    cv::rectangle(canvas.image, cv::Rect(bar.from.x, y - 1, bar.length_px + 1, 3), ink, cv::FILLED);
+    cv::rectangle(canvas.image, cv::Rect(bar.from.x, y - 5, 2, 10), ink, cv::FILLED);
+    cv::rectangle(canvas.image, cv::Rect(bar.to.x - 1, y - 5, 2, 10), ink, cv::FILLED);
     canvas.strip_used_px = top + kHeight;
     return bar;
 }

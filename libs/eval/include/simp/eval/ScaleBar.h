@@ -16,7 +16,7 @@ double scaleBarLength(double map_width_m);
 double roundLengthAtMost(double max_m);
 
 /// What drawScaleBar drew: `length_m` metres spanning `length_px` = round(length_m * px_per_m)
-/// pixels from `from` to `to` (image pixels, one row).
+/// pixels from `from` to `to` (image pixels, one row; the bar's ink covers columns [from.x, to.x]).
 struct ScaleBar {
     double length_m = 0;
     int length_px = 0;
