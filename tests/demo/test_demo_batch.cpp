@@ -9,7 +9,7 @@
 #include <simp/demo/DemoApp.h>
 #include <simp/eval/BatchConfig.h>
 #include <simp/eval/BatchFigures.h>
-#include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
 #include <simp/eval/Report.h>
 #include <simp/eval/BatchRunner.h>
 #include <simp/eval/EvalApp.h>
@@ -145,7 +145,7 @@ TEST(DemoBatch, BatchIniNamesTheDirectoriesTheDemoWrites) {
         for (int y = 1; y < L::kPanelHeight; ++y)
             for (int x = 1; x < L::kPlotWidth; ++x)
                 for (int k = 0; k < 3; ++k) {
-                    const auto c = simp::eval::classColor(k);
+                    const auto c = simp::eval::seriesColor(static_cast<std::size_t>(k));
                     coloured += e3(panel * (L::kTop + L::kPanelHeight + L::kBottom) + L::kTop + y, L::kLeft + x) ==
                                 cv::Vec3b(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
                 }

@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <simp/eval/BatchFigures.h>
-#include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
+#include <simp/eval/PngFile.h>
 
 #include <filesystem>
 #include <fstream>
@@ -53,7 +54,7 @@ TEST(BatchFigures, SuccessBarsHaveTheRatesHeight) {
     const double group_w = L::kPlotWidth / 3.0, bar_w = 0.8 * group_w / 2;
     const int x_paper = static_cast<int>(L::kLeft + 0.1 * group_w + bar_w / 2);
     const int y_zero = L::kTop + L::kSuccessHeight;
-    const cv::Scalar paper = classColor(0), robust = classColor(1);
+    const cv::Scalar paper = seriesColor(0), robust = seriesColor(1);
     EXPECT_TRUE(hasColour(img, {x_paper, y_zero - L::kSuccessHeight / 2 + 3, 1, 1}, paper));
     EXPECT_FALSE(hasColour(img, {x_paper, y_zero - L::kSuccessHeight / 2 - 5, 1, 1}, paper));
     // robust's bar on R2 (second group, second bar) is full height.
@@ -85,7 +86,7 @@ TEST(BatchFigures, ErrorOverTimeHasOnePanelPerRowAndLinesPerSequence) {
     const int panel = L::kTop + L::kPanelHeight + L::kBottom;
     EXPECT_EQ(img.cols, L::kFigureWidth);
     EXPECT_EQ(img.rows, 2 * panel);
-    const cv::Scalar r2 = classColor(1);
+    const cv::Scalar r2 = seriesColor(1);
     // y axis spans 6 x 0.3 = 1.8 m: at t = 5 s the error is 0.5 m, 0.5 / 1.8 of the height up, in
     // the second panel; the first panel (paper) has no line of that colour.
     const int x = L::kLeft + L::kPlotWidth / 2;

@@ -2,12 +2,17 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/PngFile.h>
+#include <simp/eval/ScaleBar.h>
+#include <simp/obs/ObjectClasses.h>
 
 #include <filesystem>
 
 namespace fs = std::filesystem;
 using namespace simp::eval;
+namespace fc = simp::obs::figure_colors;
 
 namespace {
 
@@ -64,8 +69,8 @@ TEST(Plots, TrajectoryFigureShowsBothPathsAndWritesPng) {
     const cv::Mat3b fig = drawTrajectoryFigure(gt, est, m, {}, &w);
     EXPECT_EQ(fig.cols, 700);
     EXPECT_EQ(fig.rows, 240 + 320);  // floor plan + error panel
-    EXPECT_GT(countColor(fig, cv::Scalar(40, 160, 40)), 50);  // ground truth green
-    EXPECT_GT(countColor(fig, cv::Scalar(200, 90, 0)), 20);   // convergence marker / line
+    EXPECT_GT(countColor(fig, toBgr(fc::kGroundTruth)), 50);  // ground truth green
+    EXPECT_GT(countColor(fig, toBgr(fc::kConvergence)), 20);   // convergence marker / line
     const auto png = (fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "traj.png").string();
     writePng(png, fig);
     const cv::Mat back = cv::imread(png);
@@ -81,8 +86,8 @@ TEST(Plots, TrajectoryFigureShowsBothPathsAndWritesPng) {
 TEST(Plots, ObjectMapAndMapEvaluationColours) {
     const auto w = smallWorld();
     const cv::Mat3b map_fig = drawObjectMap(w);
-    EXPECT_GT(countColor(map_fig, classColor(0)), 30);  // table outline + legend swatch
-    EXPECT_GT(countColor(map_fig, classColor(1)), 30);
+    EXPECT_GT(countColor(map_fig, classColor("table")), 30);  // table outline + legend swatch
+    EXPECT_GT(countColor(map_fig, classColor("chair")), 30);
 
     auto pred = w;
     pred.objects.objects.pop_back();  // chair missed
@@ -94,9 +99,9 @@ TEST(Plots, ObjectMapAndMapEvaluationColours) {
     ASSERT_EQ(m.missed_gt.size(), 1u);
     ASSERT_EQ(m.false_pred.size(), 1u);
     const cv::Mat3b eval_fig = drawMapEvaluation(w, pred, m);
-    EXPECT_GT(countColor(eval_fig, cv::Scalar(40, 170, 40)), 30);  // matched
-    EXPECT_GT(countColor(eval_fig, cv::Scalar(220, 120, 0)), 30);  // missed
-    EXPECT_GT(countColor(eval_fig, cv::Scalar(30, 30, 220)), 30);  // false
+    EXPECT_GT(countColor(eval_fig, toBgr(fc::kGroundTruth)), 30);  // matched
+    EXPECT_GT(countColor(eval_fig, toBgr(fc::kMissed)), 30);       // missed
+    EXPECT_GT(countColor(eval_fig, toBgr(fc::kWrong)), 30);        // false
 }
 
 TEST(Plots, UnwritablePathThrowsNamingIt) {
@@ -119,11 +124,11 @@ TEST(Plots, ScaleBarIsARoundLengthNearAFifthOfTheMap) {
 
 TEST(Plots, MapFigureKeepsTheLegendBesideTheMapAndCarriesAScaleBar) {
     auto w = smallWorld();
-    // 14 classes present: the legend needs more rows (14 x 24 px) than the 240 px map has
+    // 14 classes present: the legend needs more rows (scale bar + 14 x 24 px) than the 240 px map has
     w.objects.class_names.clear();
     w.objects.objects.clear();
     for (int k = 0; k < 14; ++k) {
-        w.objects.class_names.push_back("class" + std::to_string(k));
+        w.objects.class_names.push_back(simp::obs::defaultClassNames()[static_cast<std::size_t>(k)]);
         simp::world::MapObject o;
         o.id = k;
         o.class_id = k;
@@ -136,10 +141,11 @@ TEST(Plots, MapFigureKeepsTheLegendBesideTheMapAndCarriesAScaleBar) {
     ASSERT_GT(fig.rows, map_h);          // grew for the legend
     const cv::Mat3b map_area = fig(cv::Rect(0, 0, map_w, map_h)), side = fig(cv::Rect(map_w, 0, fig.cols - map_w, fig.rows));
     for (int k = 0; k < 14; ++k) EXPECT_GE(countColor(side, classColor(k)), 22 * 14) << "legend swatch of class " << k;
-    // nothing of the legend on the map: its top-left corner (free floor) stays white
+    // nothing of the legend or the scale bar on the map: its corners (free floor) stay white
     EXPECT_EQ(countColor(map_area(cv::Rect(0, 0, 120, 30)), cv::Scalar(255, 255, 255)), 120 * 30);
-    // the scale bar (black) in the bottom-left corner of the free floor: 2 m for a 10 m wide map
-    const int black = countColor(map_area(cv::Rect(0, map_h - 40, 160, 40)), cv::Scalar(0, 0, 0));
+    EXPECT_EQ(countColor(map_area(cv::Rect(0, map_h - 40, 160, 40)), cv::Scalar(255, 255, 255)), 160 * 40);
+    // the scale bar (black) at the top of the strip: 2 m for a 10 m wide map, 80 px at 40 px/m, 3 px thick
+    const int black = countColor(side(cv::Rect(0, 20, side.cols, 20)), cv::Scalar(0, 0, 0));
     EXPECT_GE(black, 2 * 40 * 3) << "a 2 m bar at 40 px/m, 3 px thick";
     writePng((fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "map_14_classes.png").string(), fig);
 }
@@ -154,13 +160,13 @@ TEST(Plots, TrajectoryMapShowsGroundTruthWhenGivenEstimateParticlesAndALegend) {
         layers.estimate.push_back({0.5 * k, {1.0 + 0.4 * k, 1.5, 0.0}});
     }
     for (int k = 0; k < 50; ++k) layers.particles.push_back({8.5 + 0.01 * k, 4.0, 0.0});
-    const cv::Scalar gt(40, 160, 40), est(30, 30, 220), particles(200, 80, 0);
+    const cv::Scalar gt = toBgr(fc::kGroundTruth), est = toBgr(fc::kEstimate), particles = toBgr(fc::kParticles);
     const cv::Mat3b fig = drawTrajectoryMap(layers);
     const cv::Mat3b map_area = fig(cv::Rect(0, 0, 400, 240)), side = fig(cv::Rect(400, 0, fig.cols - 400, fig.rows));
     EXPECT_GT(countColor(map_area, gt), 100);
     EXPECT_GT(countColor(map_area, est), 100);
     EXPECT_GT(countColor(map_area, particles), 20);
-    for (const auto& c : {gt, est, particles, classColor(0), classColor(1)})
+    for (const auto& c : {gt, est, particles, classColor("table"), classColor("chair")})
         EXPECT_GE(countColor(side, c), 22 * 14) << "legend swatch " << c;
     writePng((fs::path(SIMP_TEST_OUTPUT_DIR) / "eval_plots" / "trajectory_map.png").string(), fig);
 

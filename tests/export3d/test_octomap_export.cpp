@@ -9,6 +9,7 @@
 #include <octomap/OcTree.h>
 #include <simp/export3d/OctomapExport.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/obs/Palette.h>
 
 #include <memory>
 
@@ -97,7 +98,7 @@ TEST(OctomapExport, ColourTreeCarriesClassColours) {
     const auto* table = ct->search(2.0, 1.5, 0.4);
     ASSERT_NE(table, nullptr);
     EXPECT_TRUE(ct->isNodeOccupied(table));
-    const auto rgb = simp::maps::CObjectMap::classColor(0);
+    const auto rgb = simp::obs::classColorRgb("table");  // the palette's table, whatever its id
     EXPECT_EQ(table->getColor(), octomap::ColorOcTreeNode::Color(rgb[0], rgb[1], rgb[2]));
     const auto* wall = ct->search(3.0, 0.05, 1.0);
     ASSERT_NE(wall, nullptr);

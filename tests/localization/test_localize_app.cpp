@@ -9,6 +9,7 @@
 #include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 #include <opencv2/imgcodecs.hpp>
+#include <simp/eval/FigureColors.h>
 #include <simp/eval/Scene3D.h>
 #include <simp/io/Tum.h>
 #include <simp/world/World.h>
@@ -151,9 +152,11 @@ TEST(LocalizeApp, GroundTruthAndThreeDSceneShowTheRun) {
     // trajectory.png draws the ground truth (green of the figures, simp::eval::drawTrajectoryMap)
     const cv::Mat3b png = cv::imread(out + "/trajectory.png");
     ASSERT_FALSE(png.empty());
+    const cv::Scalar gt_bgr = simp::eval::toBgr(simp::obs::figure_colors::kGroundTruth);
+    const cv::Vec3b gt_colour(static_cast<uchar>(gt_bgr[0]), static_cast<uchar>(gt_bgr[1]), static_cast<uchar>(gt_bgr[2]));
     int green = 0;
     for (int r = 0; r < png.rows; ++r)
-        for (int c = 0; c < png.cols; ++c) green += png(r, c) == cv::Vec3b(40, 160, 40);
+        for (int c = 0; c < png.cols; ++c) green += png(r, c) == gt_colour;
     EXPECT_GT(green, 200);
 
     setArg(args, "--gt", out + "/absent.tum");

@@ -1,7 +1,7 @@
-#include <opencv2/imgcodecs.hpp>
 #include <simp/demo/DemoApp.h>
 #include <simp/eval/KidnapMetrics.h>
 #include <simp/eval/MapMetrics.h>
+#include <simp/eval/PngFile.h>
 #include <simp/eval/Plots.h>
 #include <simp/eval/TrajectoryMetrics.h>
 #include <simp/io/StrictIni.h>
@@ -43,10 +43,6 @@ void checkLocalizationConfig(const std::string& path) {
 void checkMappingConfig(const std::string& path) {
     mapping::MappingOptions opts;
     io::StrictIni(path).loadChecked([&](const io::StrictIni& ini) { opts.loadFromConfigFile(ini, "mapping"); });
-}
-
-void writePng(const std::string& path, const cv::Mat& image) {
-    if (!cv::imwrite(path, image)) throw std::runtime_error("cannot write '" + path + "'");
 }
 
 class Stopwatch {
@@ -175,8 +171,8 @@ void DemoApp::run(std::ostream& out) {
     map_recall = map_metrics.recall;
     out << std::fixed << std::setprecision(2) << "[3/6] Built map vs ground truth: IoU " << map_iou << ", precision "
         << map_precision << ", recall " << map_recall << "\n";
-    writePng((root / "object_map.png").string(), eval::drawObjectMap(built));
-    writePng((root / "map_evaluation.png").string(), eval::drawMapEvaluation(truth, built, map_metrics));
+    eval::writePng((root / "object_map.png").string(), eval::drawObjectMap(built));
+    eval::writePng((root / "map_evaluation.png").string(), eval::drawMapEvaluation(truth, built, map_metrics));
 
     // 4. Localization runs in changed worlds, on the built map.
     runs.clear();
@@ -211,7 +207,7 @@ void DemoApp::run(std::ostream& out) {
         r.ate_trans_m = m.ate_trans_m.value_or(-1.0);
         r.ate_rot_rad = m.ate_rot_rad.value_or(-1.0);
         r.duration_s = m.duration_s;
-        writePng((root / (r.name + "_trajectory.png")).string(),
+        eval::writePng((root / (r.name + "_trajectory.png")).string(),
                  eval::drawTrajectoryFigure(gt, est, m, params, &built));
         runs.push_back(r);
     }
@@ -289,7 +285,7 @@ DemoKidnapRun DemoApp::runKidnapped(const fs::path& root, const std::string& map
     r.success = m.success;
     if (!loc.estimate.empty()) {
         const auto whole = eval::evaluateTrajectory(gt, loc.estimate, eval::TrajMetricsParams());
-        writePng((root / (r.name + "_trajectory.png")).string(),
+        eval::writePng((root / (r.name + "_trajectory.png")).string(),
                  eval::drawTrajectoryFigure(gt, loc.estimate, whole, eval::TrajMetricsParams(), &built));
     }
     return r;

@@ -1,6 +1,8 @@
 #include <opencv2/imgproc.hpp>
 #include <simp/eval/BatchFigures.h>
 #include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
+#include <simp/eval/Legend.h>
 #include <simp/eval/Report.h>
 
 #include <algorithm>
@@ -13,7 +15,7 @@ namespace simp::eval {
 namespace {
 
 using L = BatchFigureLayout;
-const cv::Scalar kBlack(0, 0, 0), kGrid(215, 215, 215);
+const cv::Scalar kBlack = toBgr(obs::figure_colors::kText), kGrid = toBgr(obs::figure_colors::kGrid);
 
 void text(cv::Mat3b& img, const std::string& s, cv::Point at, double scale = 0.45) {
     cv::putText(img, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, kBlack, 1, cv::LINE_AA);
@@ -34,7 +36,7 @@ void drawAxes(cv::Mat3b& img, const cv::Rect& area, double y_max, int y_decimals
 }
 
 /// The figure's legend right of the plot (Canvas's rule: beside, never over, growing downwards).
-cv::Mat3b withLegend(cv::Mat3b img, const std::vector<std::pair<std::string, cv::Scalar>>& items) {
+cv::Mat3b withLegend(cv::Mat3b img, const std::vector<LegendItem>& items) {
     Canvas c;
     c.image = img;
     c.map_width_px = L::kLeft + L::kPlotWidth + L::kRight;
@@ -96,11 +98,11 @@ cv::Mat3b drawSuccessFigure(const BatchSummary& s) {
             // a 0 % bar is a line on the axis, so a method that never succeeds is still visible
             cv::rectangle(img, cv::Rect(x0, area.y + area.height - std::max(h, 2), std::max(1, static_cast<int>(bar_w) - 1),
                                         std::max(h, 2)),
-                          classColor(static_cast<int>(r)), cv::FILLED);
+                          seriesColor(r), cv::FILLED);
         }
     }
-    std::vector<std::pair<std::string, cv::Scalar>> legend;
-    for (std::size_t r = 0; r < s.rows.size(); ++r) legend.emplace_back(s.rows[r].label(), classColor(static_cast<int>(r)));
+    std::vector<LegendItem> legend;
+    for (std::size_t r = 0; r < s.rows.size(); ++r) legend.emplace_back(s.rows[r].label(), seriesColor(r));
     return withLegend(img, legend);
 }
 
@@ -130,12 +132,12 @@ cv::Mat3b drawErrorOverTimeFigure(const BatchSummary& s, const std::vector<RunEr
             std::vector<cv::Point> pts;
             for (std::size_t k = 0; k < r.t_s.size(); ++k) pts.push_back(px(r.t_s[k], r.trans_m[k]));
             // crisp lines: dozens of runs overlap, anti-aliasing would blend their colours
-            if (pts.size() > 1) cv::polylines(img, pts, false, classColor(static_cast<int>(r.sequence)), 1, cv::LINE_8);
+            if (pts.size() > 1) cv::polylines(img, pts, false, seriesColor(r.sequence), 1, cv::LINE_8);
         }
     }
-    std::vector<std::pair<std::string, cv::Scalar>> legend;
+    std::vector<LegendItem> legend;
     for (std::size_t q = 0; q < s.sequences.size(); ++q)
-        legend.emplace_back("sequence " + s.sequences[q], classColor(static_cast<int>(q)));
+        legend.emplace_back("sequence " + s.sequences[q], seriesColor(q));
     legend.emplace_back("bound " + fmt(max_trans_m, 2) + " m (dashed)", kBlack);
     return withLegend(img, legend);
 }

@@ -7,10 +7,10 @@
 #include <simp/eval/BatchRunner.h>
 #include <simp/eval/BatchTables.h>
 #include <simp/eval/ChangeMetrics.h>
-#include <simp/eval/Canvas.h>
 #include <simp/eval/EvalApp.h>
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/PngFile.h>
 #include <simp/eval/Report.h>
 #include <simp/world/World.h>
 

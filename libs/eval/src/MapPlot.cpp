@@ -1,27 +1,27 @@
+/// \file MapPlot.cpp
+/// drawObjectMap and drawMapEvaluation (Plots.h): object maps over the floor plan.
 #include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
+#include <simp/eval/Legend.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/ScaleBar.h>
 #include <simp/geometry/Footprint.h>
 
-#include <algorithm>
-#include <limits>
 #include <set>
 
 namespace simp::eval {
 namespace {
 
+namespace fc = obs::figure_colors;
+
 /// Canvas over the floor plan, or over the objects' extent when there is no floor plan.
 Canvas canvasFor(const mrpt::maps::COccupancyGridMap2D& grid, const world::ObjectMapData& objects,
                  const world::ObjectMapData* extra = nullptr) {
-    double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
-    for (const auto* map : {&objects, extra}) {
-        if (!map) continue;
-        for (const auto& o : map->objects) {
-            x0 = std::min(x0, o.box.center.x()), y0 = std::min(y0, o.box.center.y());
-            x1 = std::max(x1, o.box.center.x()), y1 = std::max(y1, o.box.center.y());
-        }
-    }
-    if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-    return makeCanvasFor(&grid, x0, y0, x1, y1);
+    WorldBounds bounds;
+    for (const auto* map : {&objects, extra})
+        if (map)
+            for (const auto& o : map->objects) bounds.add(o.box);
+    return makeCanvasFor(&grid, bounds);
 }
 
 }  // namespace
@@ -32,7 +32,7 @@ cv::Mat3b drawObjectMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     Canvas c = canvasFor(grid, objects);
     std::set<int> present;
     for (const auto& o : objects.objects) {
-        drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id), 2, 0.35);
+        drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id, objects.class_names), 2, 0.35);
         present.insert(o.class_id);
     }
     drawScaleBar(c);
@@ -41,7 +41,7 @@ cv::Mat3b drawObjectMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
 }
 
 cv::Mat3b drawMapEvaluation(const world::World& gt, const world::World& map, const MapMetrics& m) {
-    const cv::Scalar kMatched(40, 170, 40), kMissed(220, 120, 0), kFalse(30, 30, 220);
+    const cv::Scalar kMatched = toBgr(fc::kGroundTruth), kMissed = toBgr(fc::kMissed), kFalse = toBgr(fc::kWrong);
     Canvas c = canvasFor(gt.floorplan, gt.objects, &map.objects);
     for (const auto& match : m.matches) {
         drawPolygon(c, geometry::footprint(gt.objects.objects.at(match.gt_index).box), kMatched, 2, 0.3);

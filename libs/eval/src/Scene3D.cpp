@@ -1,4 +1,5 @@
 #include <simp/eval/Scene3D.h>
+#include <simp/obs/Palette.h>
 #include <simp/world/ObjectMap3D.h>
 
 #include <mrpt/io/CFileGZInputStream.h>
@@ -17,12 +18,12 @@ namespace {
 
 /// A line strip through `traj`, without the segment into pose `jump` (> 0: a teleport).
 mrpt::opengl::CSetOfLines::Ptr trajectoryLines(const std::vector<io::StampedPose2D>& traj, std::size_t jump, double z_m,
-                                               const char* name, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+                                               const char* name, const obs::Rgb& color) {
     auto lines = mrpt::opengl::CSetOfLines::Create();
     for (std::size_t k = 1; k < traj.size(); ++k)
         if (k != jump) lines->appendLine(traj[k - 1].pose.x, traj[k - 1].pose.y, z_m, traj[k].pose.x, traj[k].pose.y, z_m);
     lines->setLineWidth(3.0f);
-    lines->setColor_u8(r, g, b);
+    lines->setColor_u8(color[0], color[1], color[2]);
     lines->setName(name);
     return lines;
 }
@@ -44,13 +45,13 @@ mrpt::opengl::COpenGLScene::Ptr buildScene(const MapLayers& l) {
         scene->insert(objects);
     }
     if (l.ground_truth.size() > 1)
-        scene->insert(trajectoryLines(l.ground_truth, l.ground_truth_jump, 0.05, scene_names::kGroundTruth, 40, 160, 40));
-    if (l.estimate.size() > 1) scene->insert(trajectoryLines(l.estimate, 0, 0.10, scene_names::kEstimate, 220, 30, 30));
+        scene->insert(trajectoryLines(l.ground_truth, l.ground_truth_jump, 0.05, scene_names::kGroundTruth, obs::figure_colors::kGroundTruth));
+    if (l.estimate.size() > 1) scene->insert(trajectoryLines(l.estimate, 0, 0.10, scene_names::kEstimate, obs::figure_colors::kEstimate));
     if (!l.particles.empty()) {
         auto cloud = mrpt::opengl::CPointCloud::Create();
         for (const auto& p : l.particles) cloud->insertPoint(static_cast<float>(p.x), static_cast<float>(p.y), 0.05f);
         cloud->setPointSize(3.0f);
-        cloud->setColor_u8(0, 80, 200);
+        cloud->setColor_u8(obs::figure_colors::kParticles[0], obs::figure_colors::kParticles[1], obs::figure_colors::kParticles[2]);
         cloud->setName(scene_names::kParticles);
         scene->insert(cloud);
     }

@@ -1,6 +1,9 @@
 #include <opencv2/imgproc.hpp>
 #include <simp/eval/Canvas.h>
+#include <simp/eval/FigureColors.h>
+#include <simp/eval/Legend.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/ScaleBar.h>
 #include <simp/eval/Report.h>
 #include <simp/geometry/Footprint.h>
 
@@ -12,8 +15,11 @@
 namespace simp::eval {
 namespace {
 
-const cv::Scalar kLifted(255, 0, 0), kPutDown(0, 140, 255), kParticles(200, 80, 0), kGt(40, 160, 40), kEstBefore(0, 165, 255), kEstAfter(30, 30, 220), kConv(200, 90, 0),
-    kBlack(0, 0, 0), kGrid(215, 215, 215);
+namespace fc = obs::figure_colors;
+const cv::Scalar kLifted = toBgr(fc::kKidnapLifted), kPutDown = toBgr(fc::kKidnapPutDown), kParticles = toBgr(fc::kParticles),
+                 kGt = toBgr(fc::kGroundTruth), kEstBefore = toBgr(fc::kEstimateBefore), kEstAfter = toBgr(fc::kEstimate),
+                 kConv = toBgr(fc::kConvergence), kDiv = toBgr(fc::kDivergence), kBlack = toBgr(fc::kText),
+                 kGrid = toBgr(fc::kGrid);
 
 /// One error panel: values over time, a dashed bound, vertical event lines.
 void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, double bound, double y_max,
@@ -39,7 +45,7 @@ void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, doubl
     if (pts.size() > 1) cv::polylines(img, pts, false, kEstAfter, 1, cv::LINE_AA);
     if (m.convergence_time_s) cv::line(img, px(*m.convergence_time_s, 0), px(*m.convergence_time_s, y_max), kConv, 2);
     if (m.divergence_time_s)
-        cv::line(img, px(*m.divergence_time_s, 0), px(*m.divergence_time_s, y_max), cv::Scalar(0, 0, 255), 2);
+        cv::line(img, px(*m.divergence_time_s, 0), px(*m.divergence_time_s, y_max), kDiv, 2);
     cv::putText(img, label, {area.x, area.y - 5}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kBlack, 1, cv::LINE_AA);
 }
 
@@ -66,31 +72,28 @@ cv::Mat3b drawErrorPlot(const TrajMetrics& m, const TrajMetricsParams& p, int wi
 }
 
 cv::Mat3b drawTrajectoryMap(const MapLayers& l) {
-    double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
-    const auto extend = [&](double x, double y) {
-        x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
-    };
+    WorldBounds bounds;
     for (const auto* traj : {&l.ground_truth, &l.estimate})
-        for (const auto& s : *traj) extend(s.pose.x, s.pose.y);
-    for (const auto& p : l.particles) extend(p.x, p.y);
+        for (const auto& s : *traj) bounds.add(s.pose.x, s.pose.y);
+    for (const auto& p : l.particles) bounds.add(p.x, p.y);
     if (l.objects)
-        for (const auto& o : l.objects->objects) extend(o.box.center.x(), o.box.center.y());
-    if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
-    Canvas c = makeCanvasFor(l.floorplan, x0, y0, x1, y1);
+        for (const auto& o : l.objects->objects) bounds.add(o.box);
+    Canvas c = makeCanvasFor(l.floorplan, bounds);
 
     std::set<int> present;
     if (l.objects)
         for (const auto& o : l.objects->objects) {
-            drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id), 1, 0.25);
+            drawPolygon(c, geometry::footprint(o.box), classColor(o.class_id, l.objects->class_names), 1, 0.25);
             present.insert(o.class_id);
         }
-    for (const auto& p : l.particles) cv::circle(c.image, c.toPixel(p.x, p.y), 1, kParticles, cv::FILLED);
+    cv::Mat3b on_map = c.map();
+    for (const auto& p : l.particles) cv::circle(on_map, c.toPixel(p.x, p.y), 1, kParticles, cv::FILLED);
     const auto polyline = [&](const std::vector<io::StampedPose2D>& traj, const cv::Scalar& colour, std::size_t jump) {
         std::vector<cv::Point> pts;
         for (const auto& s : traj) pts.push_back(c.toPixel(s.pose.x, s.pose.y));
         for (std::size_t k = 1; k < pts.size(); ++k)
-            if (k != jump) cv::line(c.image, pts[k - 1], pts[k], colour, 2, cv::LINE_AA);
-        if (!pts.empty()) cv::circle(c.image, pts.front(), 6, colour, 2, cv::LINE_AA);
+            if (k != jump) cv::line(on_map, pts[k - 1], pts[k], colour, 2, cv::LINE_AA);
+        if (!pts.empty()) cv::circle(on_map, pts.front(), 6, colour, 2, cv::LINE_AA);
     };
     polyline(l.ground_truth, kGt, l.ground_truth_jump);
     polyline(l.estimate, kEstAfter, 0);
@@ -98,17 +101,17 @@ cv::Mat3b drawTrajectoryMap(const MapLayers& l) {
     if (kidnap) {
         const auto& from = l.ground_truth[l.ground_truth_jump - 1].pose;
         const auto& to = l.ground_truth[l.ground_truth_jump].pose;
-        cv::circle(c.image, c.toPixel(from.x, from.y), 8, kLifted, 2, cv::LINE_AA);
-        cv::circle(c.image, c.toPixel(to.x, to.y), 7, kPutDown, cv::FILLED, cv::LINE_AA);
+        cv::circle(on_map, c.toPixel(from.x, from.y), 8, kLifted, 2, cv::LINE_AA);
+        cv::circle(on_map, c.toPixel(to.x, to.y), 7, kPutDown, cv::FILLED, cv::LINE_AA);
     }
     if (!l.estimate.empty()) {  // the final estimate with its heading
         const auto& b = l.estimate.back().pose;
-        cv::circle(c.image, c.toPixel(b.x, b.y), 4, kEstAfter, cv::FILLED, cv::LINE_AA);
-        cv::line(c.image, c.toPixel(b.x, b.y), c.toPixel(b.x + 0.5 * std::cos(b.phi), b.y + 0.5 * std::sin(b.phi)),
+        cv::circle(on_map, c.toPixel(b.x, b.y), 4, kEstAfter, cv::FILLED, cv::LINE_AA);
+        cv::line(on_map, c.toPixel(b.x, b.y), c.toPixel(b.x + 0.5 * std::cos(b.phi), b.y + 0.5 * std::sin(b.phi)),
                  kEstAfter, 2, cv::LINE_AA);
     }
     drawScaleBar(c);
-    std::vector<std::pair<std::string, cv::Scalar>> legend;
+    std::vector<LegendItem> legend;
     if (!l.ground_truth.empty()) legend.emplace_back("ground truth (o = start)", kGt);
     if (kidnap) {
         legend.emplace_back("kidnap: lifted here", kLifted);
@@ -124,27 +127,25 @@ cv::Mat3b drawTrajectoryMap(const MapLayers& l) {
 
 cv::Mat3b drawTrajectoryFigure(const std::vector<io::StampedPose2D>& gt, const std::vector<io::StampedPose2D>& est,
                                const TrajMetrics& m, const TrajMetricsParams& p, const world::World* world) {
-    double x0 = std::numeric_limits<double>::max(), y0 = x0, x1 = -x0, y1 = -x0;
+    WorldBounds bounds;
     for (const auto* traj : {&gt, &est})
-        for (const auto& s : *traj) {
-            x0 = std::min(x0, s.pose.x), y0 = std::min(y0, s.pose.y);
-            x1 = std::max(x1, s.pose.x), y1 = std::max(y1, s.pose.y);
-        }
-    Canvas c = makeCanvasFor(world ? &world->floorplan : nullptr, x0, y0, x1, y1);
+        for (const auto& s : *traj) bounds.add(s.pose.x, s.pose.y);
+    Canvas c = makeCanvasFor(world ? &world->floorplan : nullptr, bounds);
+    cv::Mat3b on_map = c.map();
 
     std::vector<cv::Point> gt_px;
     for (const auto& s : gt) gt_px.push_back(c.toPixel(s.pose.x, s.pose.y));
-    cv::polylines(c.image, gt_px, false, kGt, 2, cv::LINE_AA);
+    cv::polylines(on_map, gt_px, false, kGt, 2, cv::LINE_AA);
     const double t_conv = m.convergence_time_s ? m.start_s + *m.convergence_time_s : std::numeric_limits<double>::max();
     std::vector<cv::Point> after;
     for (const auto& s : est) {
         if (s.t_s < m.start_s || s.t_s > m.start_s + m.duration_s) continue;
-        if (s.t_s < t_conv) cv::circle(c.image, c.toPixel(s.pose.x, s.pose.y), 2, kEstBefore, cv::FILLED, cv::LINE_AA);
+        if (s.t_s < t_conv) cv::circle(on_map, c.toPixel(s.pose.x, s.pose.y), 2, kEstBefore, cv::FILLED, cv::LINE_AA);
         else after.push_back(c.toPixel(s.pose.x, s.pose.y));
     }
-    if (after.size() > 1) cv::polylines(c.image, after, false, kEstAfter, 2, cv::LINE_AA);
-    if (!gt_px.empty()) cv::circle(c.image, gt_px.front(), 6, kGt, 2, cv::LINE_AA);
-    if (!after.empty()) cv::drawMarker(c.image, after.front(), kConv, cv::MARKER_CROSS, 16, 3);
+    if (after.size() > 1) cv::polylines(on_map, after, false, kEstAfter, 2, cv::LINE_AA);
+    if (!gt_px.empty()) cv::circle(on_map, gt_px.front(), 6, kGt, 2, cv::LINE_AA);
+    if (!after.empty()) cv::drawMarker(on_map, after.front(), kConv, cv::MARKER_CROSS, 16, 3);
     drawScaleBar(c);
     drawLegend(c, {{"ground truth (o = start)", kGt},
                    {"estimate before convergence", kEstBefore},

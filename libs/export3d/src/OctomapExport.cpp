@@ -4,7 +4,7 @@
 #include <octomap/ColorOcTree.h>
 #include <octomap/OcTree.h>
 #include <simp/export3d/OctomapExport.h>
-#include <simp/maps/CObjectMap.h>
+#include <simp/obs/Palette.h>
 
 #include <algorithm>
 #include <array>
@@ -100,7 +100,7 @@ void fillObjects(TREE& tree, const simp::world::World& w, const OctomapExportOpt
             lo = lo.cwiseMin(c);
             hi = hi.cwiseMax(c);
         }
-        const auto rgb = simp::maps::CObjectMap::classColor(o.class_id);
+        const auto rgb = simp::obs::classColorRgb(o.class_id, w.objects.class_names);
         for (double x : centresIn(lo.x(), hi.x(), r))
             for (double y : centresIn(lo.y(), hi.y(), r))
                 for (double z : centresIn(lo.z(), hi.z(), r))

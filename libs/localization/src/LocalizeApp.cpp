@@ -5,8 +5,8 @@
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <simp/eval/Canvas.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/PngFile.h>
 #include <simp/eval/Scene3D.h>
 #include <simp/localization/RawlogSequence.h>
 #include <simp/localization/ScanLikelihood.h>

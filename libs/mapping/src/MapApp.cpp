@@ -3,8 +3,8 @@
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
-#include <simp/eval/Canvas.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/PngFile.h>
 #include <simp/eval/Scene3D.h>
 #include <simp/obs/RawlogReader.h>
 

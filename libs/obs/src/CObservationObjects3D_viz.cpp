@@ -22,7 +22,7 @@ void CObservationObjects3D::getVisualizationInto(mrpt::opengl::CSetOfObjects& o)
     for (std::size_t i = 0; i < m_detections.size(); ++i) {
         std::ostringstream label;
         label << classNameOf(m_detections[i]) << " " << std::fixed << std::setprecision(2) << m_detections[i].confidence;
-        appendLabelledBox(boxInRobot(i), m_detections[i].class_id, label.str(), o);
+        appendLabelledBox(boxInRobot(i), classColorRgb(m_detections[i].class_id, m_class_names), label.str(), o);
     }
 }
 

@@ -1,5 +1,5 @@
-#include <simp/eval/Canvas.h>
 #include <simp/eval/Plots.h>
+#include <simp/eval/PngFile.h>
 #include <simp/sim/Sequence.h>
 
 namespace simp::sim {

@@ -2,13 +2,12 @@
 #include <simp/stats/NoisePlot.h>
 
 #include <Eigen/Eigenvalues>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <simp/eval/FigureColors.h>
+#include <simp/eval/PngFile.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
-#include <stdexcept>
 
 namespace simp::stats {
 
@@ -29,23 +28,22 @@ void writeNoisePng(const std::string& path, const Histogram2D& h, const NoiseFit
         return cv::Point2d((p.x() - h.x_min_m) * px_per_m, (ny * h.cell_m - (p.y() - h.y_min_m)) * px_per_m);
     };
     const cv::Point2d origin = toPixel(Eigen::Vector2d::Zero());
-    cv::drawMarker(big, origin, cv::Scalar(255, 255, 255), cv::MARKER_CROSS, 3 * s, 1);
+    namespace fc = obs::figure_colors;
+    cv::drawMarker(big, origin, eval::toBgr(fc::kSigma3), cv::MARKER_CROSS, 3 * s, 1);
     // Ellipses: semi-axes k sqrt(lambda_i) along the eigenvectors of Sigma.
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(fit.model.cov_m2);
     const Eigen::Vector2d ev = es.eigenvalues().cwiseMax(0.0).cwiseSqrt();
     const Eigen::Vector2d axis = es.eigenvectors().col(1);
     const double angle_deg = -std::atan2(axis.y(), axis.x()) * 180.0 / M_PI;  // image y is down
     const cv::Point2d c = toPixel(fit.model.mean_m);
-    const cv::Scalar colours[3] = {cv::Scalar(0, 0, 255), cv::Scalar(0, 165, 255), cv::Scalar(255, 255, 255)};
+    const cv::Scalar colours[3] = {eval::toBgr(fc::kSigma1), eval::toBgr(fc::kSigma2), eval::toBgr(fc::kSigma3)};
     for (int k = 1; k <= 3; ++k)
         cv::ellipse(big, cv::RotatedRect(c, cv::Size2f(static_cast<float>(2 * k * ev(1) * px_per_m),
                                                       static_cast<float>(2 * k * ev(0) * px_per_m)),
                                          static_cast<float>(angle_deg)),
                     colours[k - 1], 1, cv::LINE_AA);
-    cv::putText(big, title, cv::Point(4, 14), cv::FONT_HERSHEY_SIMPLEX, 0.45, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-    const std::filesystem::path p(path);
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    if (!cv::imwrite(path, big)) throw std::runtime_error(path + ": cannot write the PNG");
+    cv::putText(big, title, cv::Point(4, 14), cv::FONT_HERSHEY_SIMPLEX, 0.45, eval::toBgr(fc::kSigma3), 1, cv::LINE_AA);
+    eval::writePng(path, big);
 }
 
 }  // namespace simp::stats

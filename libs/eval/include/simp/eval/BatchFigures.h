@@ -1,7 +1,7 @@
 #pragma once
 /// \file BatchFigures.h
-/// Summary figures of a batch (drawn with the project's figure module: Canvas legends right of
-/// the plot, class palette simp::obs::classColorRgb for the series):
+/// Summary figures of a batch (drawn with the project's figure module, doc/figures.md: the legend
+/// right of the plot by drawLegend, series colours simp::obs::seriesColorRgb, not class colours):
 ///  - success.png: success rate (%) per sequence (groups on the x axis, AVG last), one bar per
 ///    table row (method, localization config);
 ///  - error_over_time.png: one panel per table row (run group), the translation error (m) of every
@@ -20,7 +20,7 @@ namespace simp::eval {
 /// Pixel layout of the batch figures: a plot area kPlotWidth wide between margins, a legend
 /// panel on the right. success.png is kFigureWidth x (kTop + kSuccessHeight + kBottom);
 /// error_over_time.png is kFigureWidth x rows * (kTop + kPanelHeight + kBottom) (both grow
-/// downwards only when the legend is taller).
+/// downwards when the legend is taller, to the right when a label is wider than kLegendWidth).
 struct BatchFigureLayout {
     static constexpr int kLeft = 70, kPlotWidth = 800, kRight = 20, kLegendWidth = 300;
     static constexpr int kTop = 40, kBottom = 50, kSuccessHeight = 300, kPanelHeight = 200;

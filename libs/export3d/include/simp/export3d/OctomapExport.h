@@ -58,7 +58,7 @@ struct OctomapExportSummary {
 double estimateVoxels(const simp::world::World& world, const OctomapExportOptions& opt);
 
 /// Writes the world to `path`: `.bt` (OcTree, binary) or `.ot` (ColorOcTree: walls grey, objects in
-/// their class colour as simp::maps::CObjectMap::classColor). A voxel is occupied by a wall when its
+/// their class colour, simp::obs::classColorRgb by name, as in every figure). A voxel is occupied by a wall when its
 /// centre lies in an occupied floor-plan cell (free-cell probability <= 0.35, i.e. occupancy >= 0.65, as
 /// the world's floorplan.png), and by a box when its centre lies within half a voxel of the box
 /// (boxes thinner than a voxel still appear; planners get a conservative map).
