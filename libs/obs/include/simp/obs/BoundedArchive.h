@@ -44,6 +44,10 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// The robot movements of an action collection about to be read: a Thrun motion model asking
     /// for more than 1e5 particles (MRPT would allocate them all) or an unknown model is an error.
     void guardMotionModels();
+    /// Action collections and sensory frames nested inside the entry about to be read (MRPT reads
+    /// them through its own ReadObject, sized from their counts, before checking their class):
+    /// their counts are checked against the bytes left (64 KB ahead are looked at).
+    void guardNestedCounts();
 
     mrpt::io::CStream& m_in;
     std::uint64_t m_size;
