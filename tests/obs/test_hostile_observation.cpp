@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 
 using ::testing::HasSubstr;
@@ -319,7 +320,9 @@ TEST(HostileObservation, SavedFuzzFindingsAreRejectedQuickly) {
         std::ifstream f(e.path(), std::ios::binary);
         const Bytes b{std::istreambuf_iterator<char>(f), {}};
         const auto start = std::chrono::steady_clock::now();
-        EXPECT_NE(readError(b), "") << e.path();
+        const auto err = readError(b);
+        EXPECT_NE(err, "") << e.path();
+        std::cout << e.path().filename().string() << ": " << err.substr(0, 300) << "\n";
         EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0) << e.path();
         ++n;
     }

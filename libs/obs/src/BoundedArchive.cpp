@@ -1,4 +1,6 @@
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CAction.h>
+#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
 
@@ -37,7 +39,15 @@ size_t BoundedArchive::read(void* buf, size_t len) {
         m_fetched += got;
         done += got;
     }
-    return done;  // 0 at the end: MRPT's ReadBuffer turns it into its end-of-file error
+    // MRPT 2.5's ReadBuffer only fails when nothing at all is read: a u32 count cut by the end of
+    // the file was taken with its missing bytes uninitialized (libFuzzer: a 32-byte rawlog whose
+    // collection count was cut after 2 bytes allocated > 1 GB). Every read of an archive is of a
+    // fixed size, so a short one is the end of the data in the middle of an object.
+    if (done < len)
+        throw std::runtime_error("'" + m_description + "': the data ends in the middle of an object (" +
+                                 std::to_string(len) + " bytes wanted, " + std::to_string(done) +
+                                 " left; truncated or corrupted)");
+    return done;
 }
 
 const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
@@ -258,19 +268,48 @@ void BoundedArchive::guardNestedCounts() {
         if (h.version <= 2) count("CSensoryFrame", h.data + (h.version == 2 ? 0 : h.version == 1 ? 4 : 12));
 }
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() { return readGuarded(nullptr, 0); }
+
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth) {
     std::string class_name;
     bool old_format = false;
     int8_t version = -1;
     internal_ReadObjectHeader(class_name, old_format, version);
+    if (base && class_name == "nullptr")
+        throw std::invalid_argument(m_description + ": a null object where a " + base->className +
+                                    " belongs (corrupted file)");
     mrpt::serialization::CSerializable::Ptr obj;
     if (class_name != "nullptr") {
         const auto* id = mrpt::rtti::findRegisteredClass(class_name);
         if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
-        guardCounts(id->className, static_cast<std::uint8_t>(version));
-        if (std::string(id->className) == "mrpt::obs::CActionCollection") guardMotionModels();
-        guardNestedCounts();
+        if (base && !id->derivedFrom(base))
+            throw std::invalid_argument(m_description + ": a '" + class_name + "' where a " + base->className +
+                                        " belongs (corrupted file)");
+        const std::string cls = id->className;
+        guardCounts(cls, static_cast<std::uint8_t>(version));
+        if (cls == "mrpt::obs::CActionCollection") guardMotionModels();
+        // A robot movement stored as an entry of its own (not in a collection) reaches MRPT's
+        // reader the same way (libFuzzer: the null pose PDF segfault past the collection guard).
+        if (cls == "mrpt::obs::CActionRobotMovement2D" && version >= 4 && version <= 7)
+            checkRobotMovement2D(peek(kActionScanBytes), 0, m_description);
+        if (depth == 0) guardNestedCounts();
         obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
+        if (cls == "mrpt::obs::CActionCollection" && version == 0) {
+            // Read here, not by MRPT 2.5's CActionCollection::serializeFrom: that one casts each
+            // stored object to CAction and dereferences the result unchecked, so a null object or
+            // any other class there (libFuzzer: a CPose2D) is a segfault. Each action's class is
+            // checked from its header before it is created.
+            auto& actions = dynamic_cast<mrpt::obs::CActionCollection&>(*obj);
+            const auto n = ReadAs<std::uint32_t>();  // bounded by guardCounts / guardMotionModels
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const auto a = std::dynamic_pointer_cast<mrpt::obs::CAction>(
+                    readGuarded(&mrpt::obs::CAction::GetRuntimeClassIdStatic(), depth + 1));
+                actions.insertPtr(a);
+            }
+            if (!old_format && ReadAs<std::uint8_t>() != 0x88)  // MRPT's SERIALIZATION_END_FLAG
+                throw std::invalid_argument(m_description + ": CActionCollection: end flag missing (corrupted file)");
+            return obj;
+        }
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);
     return obj;
