@@ -1,4 +1,6 @@
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/obs/CAction.h>
+#include <mrpt/obs/CActionCollection.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
 
@@ -8,6 +10,7 @@
 #include <fstream>
 #include <optional>
 #include <stdexcept>
+#include <string_view>
 
 namespace simp::obs {
 
@@ -36,7 +39,15 @@ size_t BoundedArchive::read(void* buf, size_t len) {
         m_fetched += got;
         done += got;
     }
-    return done;  // 0 at the end: MRPT's ReadBuffer turns it into its end-of-file error
+    // MRPT 2.5's ReadBuffer only fails when nothing at all is read: a u32 count cut by the end of
+    // the file was taken with its missing bytes uninitialized (libFuzzer: a 32-byte rawlog whose
+    // collection count was cut after 2 bytes allocated > 1 GB). Every read of an archive is of a
+    // fixed size, so a short one is the end of the data in the middle of an object.
+    if (done < len)
+        throw std::runtime_error("'" + m_description + "': the data ends in the middle of an object (" +
+                                 std::to_string(len) + " bytes wanted, " + std::to_string(done) +
+                                 " left; truncated or corrupted)");
+    return done;
 }
 
 const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
@@ -89,6 +100,46 @@ std::optional<std::string> objectNameAt(const std::vector<std::uint8_t>& b, std:
     const std::size_t len = b[at] & 0x7f;
     if (len == 0 || at + 1 + len > b.size()) return std::nullopt;
     return std::string(reinterpret_cast<const char*>(b.data() + at + 1), len);
+}
+
+/// An object header found in a peeked window: where the object's data starts (after its version)
+/// and its version.
+struct HeaderAt {
+    std::size_t data;
+    std::uint32_t version;
+};
+
+/// Every position of `b` that MRPT 2.5's CArchive::internal_ReadObjectHeader would read as a header
+/// of class `cls`: new format (byte 0x80|length, name, int8 version) or old format (length, 0 0 0,
+/// name, int32 version); MRPT copies the name as a C string, so a NUL inside the declared length
+/// ends it ("mrpt::obs::CActionCollection\0\1\0\0" with length 33 is a collection), and
+/// findRegisteredClass ignores the namespace (resolvesTo). libFuzzer found both ways past a match
+/// of the exact name.
+std::vector<HeaderAt> headersOf(const std::vector<std::uint8_t>& b, const std::string& cls) {
+    std::vector<HeaderAt> out;
+    const std::string_view all(reinterpret_cast<const char*>(b.data()), b.size());
+    constexpr std::size_t kMaxNameLength = 120;  // MRPT rejects longer names
+    for (auto pos = all.find(cls); pos != std::string_view::npos; pos = all.find(cls, pos + 1)) {
+        const std::size_t e = pos + cls.size();  // where the resolved name ends
+        for (std::size_t l = cls.size(); l <= kMaxNameLength && l <= e; ++l) {
+            const std::size_t s = e - l;  // where the name starts
+            if (b[s] == 0) break;         // the name would end before `e`, and so for longer ones
+            if (!resolvesTo(std::string(all.substr(s, l)), cls)) continue;
+            const auto declared_ok = [&](std::size_t len) {
+                return len >= l && len <= kMaxNameLength && (len == l || (e < b.size() && b[e] == 0));
+            };
+            if (s >= 1 && (b[s - 1] & 0x80) && declared_ok(b[s - 1] & 0x7fu) && s + (b[s - 1] & 0x7fu) < b.size()) {
+                const std::size_t v = s + (b[s - 1] & 0x7fu);
+                out.push_back({v + 1, b[v]});
+            }
+            if (s >= 4 && !(b[s - 4] & 0x80) && b[s - 3] == 0 && b[s - 2] == 0 && b[s - 1] == 0 && declared_ok(b[s - 4]) &&
+                s + b[s - 4] + 4 <= b.size()) {
+                const std::size_t v = s + b[s - 4];
+                out.push_back({v + 4, u32At(b, v)});
+            }
+        }
+    }
+    return out;
 }
 
 /// Checks the motion model of a CActionRobotMovement2D whose data (after its version byte) starts
@@ -155,17 +206,8 @@ void BoundedArchive::guardMotionModels() {
                                     " actions (at most " + std::to_string(kMaxActionsPerCollection) +
                                     "; corrupted file)");
     std::uint64_t particles = 0;
-    for (std::size_t end = cls.size(); end <= b.size(); ++end) {
-        if (std::memcmp(b.data() + end - cls.size(), cls.data(), cls.size()) != 0) continue;
-        // The header's length byte sits right before the name, which ends here.
-        for (std::size_t len = cls.size(); len <= 127 && len < end; ++len) {
-            const std::size_t hdr = end - len - 1;
-            if (b[hdr] != (0x80 | len) || !resolvesTo(*objectNameAt(b, hdr), cls) || end >= b.size()) continue;
-            const std::uint8_t version = b[end];
-            if (version >= 4 && version <= 7) particles += checkRobotMovement2D(b, end + 1, m_description);
-            break;
-        }
-    }
+    for (const auto& h : headersOf(b, cls))
+        if (h.version >= 4 && h.version <= 7) particles += checkRobotMovement2D(b, h.data, m_description);
     if (particles > kMaxThrunParticles)
         throw std::invalid_argument(m_description + ": the robot movements of one CActionCollection ask for " +
                                     std::to_string(particles) + " Thrun motion-model particles together (at most " +
@@ -192,18 +234,82 @@ void BoundedArchive::guardCounts(const std::string& class_name, int version) {
                                     std::to_string(bytesLeft()) + " remain in the file (corrupted or truncated)");
 }
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
+void BoundedArchive::guardNestedCounts() {
+    // MRPT reads the objects inside an entry with its own ReadObject, which no guard sees: an
+    // action collection or sensory frame stored where an action or observation belongs is
+    // deserialized (and sized from its count) before MRPT notices the wrong class. libFuzzer found
+    // a 1 895-byte rawlog whose nested collection asked for 1.9e9 actions (30 GB). So every header
+    // ahead that MRPT would read as one of them has its count checked: at most 64 actions, and the
+    // elements of all of them together need 3 bytes each of what is left in the file (in a valid
+    // file the containers' elements are disjoint, so they always fit; nested ones claim the same
+    // bytes again). Headers further than the window ahead are checked when their entry is read.
+    const auto& b = peek(kActionScanBytes);
+    std::uint64_t elements = 0;
+    const auto count = [&](const char* cls, std::size_t at) {
+        if (at + 4 > b.size()) return;  // cut by the window or the end of file
+        const std::uint32_t n = u32At(b, at);
+        if (std::string(cls) == "CActionCollection" && n > kMaxActionsPerCollection)
+            throw std::invalid_argument(m_description + ": a nested mrpt::obs::CActionCollection " +
+                                        std::to_string(at) + " bytes into the entry holds " + std::to_string(n) +
+                                        " actions (at most " + std::to_string(kMaxActionsPerCollection) +
+                                        "; corrupted file)");
+        elements += n;
+        constexpr std::uint64_t kMinObjectBytes = 3;  // name length byte, >= 1 name byte, end flag
+        if (elements * kMinObjectBytes > bytesLeft())
+            throw std::invalid_argument(m_description + ": the " + cls + " " + std::to_string(at) +
+                                        " bytes into the entry claims " + std::to_string(n) +
+                                        " elements, more than the " + std::to_string(bytesLeft()) +
+                                        " bytes left in the file can hold next to the containers before it "
+                                        "(corrupted file)");
+    };
+    for (const auto& h : headersOf(b, "CActionCollection"))
+        if (h.version == 0) count("CActionCollection", h.data);
+    for (const auto& h : headersOf(b, "CSensoryFrame"))
+        if (h.version <= 2) count("CSensoryFrame", h.data + (h.version == 2 ? 0 : h.version == 1 ? 4 : 12));
+}
+
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() { return readGuarded(nullptr, 0); }
+
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth) {
     std::string class_name;
     bool old_format = false;
     int8_t version = -1;
     internal_ReadObjectHeader(class_name, old_format, version);
+    if (base && class_name == "nullptr")
+        throw std::invalid_argument(m_description + ": a null object where a " + base->className +
+                                    " belongs (corrupted file)");
     mrpt::serialization::CSerializable::Ptr obj;
     if (class_name != "nullptr") {
         const auto* id = mrpt::rtti::findRegisteredClass(class_name);
         if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
-        guardCounts(id->className, static_cast<std::uint8_t>(version));
-        if (std::string(id->className) == "mrpt::obs::CActionCollection") guardMotionModels();
+        if (base && !id->derivedFrom(base))
+            throw std::invalid_argument(m_description + ": a '" + class_name + "' where a " + base->className +
+                                        " belongs (corrupted file)");
+        const std::string cls = id->className;
+        guardCounts(cls, static_cast<std::uint8_t>(version));
+        if (cls == "mrpt::obs::CActionCollection") guardMotionModels();
+        // A robot movement stored as an entry of its own (not in a collection) reaches MRPT's
+        // reader the same way (libFuzzer: the null pose PDF segfault past the collection guard).
+        if (cls == "mrpt::obs::CActionRobotMovement2D" && version >= 4 && version <= 7)
+            checkRobotMovement2D(peek(kActionScanBytes), 0, m_description);
+        if (depth == 0) guardNestedCounts();
         obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
+        if (cls == "mrpt::obs::CActionCollection" && version == 0) {
+            // Read here, not by MRPT 2.5's CActionCollection::serializeFrom: that one casts each
+            // stored object to CAction and dereferences the result unchecked, so a null object or
+            // any other class there (libFuzzer: a CPose2D) is a segfault. Each action's class is
+            // checked from its header before it is created.
+            auto& actions = dynamic_cast<mrpt::obs::CActionCollection&>(*obj);
+            const auto n = ReadAs<std::uint32_t>();  // bounded by guardCounts / guardMotionModels
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const auto a = std::dynamic_pointer_cast<mrpt::obs::CAction>(
+                    readGuarded(&mrpt::obs::CAction::GetRuntimeClassIdStatic(), depth + 1));
+                actions.insertPtr(a);
+            }
+            if (!old_format && ReadAs<std::uint8_t>() != 0x88)  // MRPT's SERIALIZATION_END_FLAG
+                throw std::invalid_argument(m_description + ": CActionCollection: end flag missing (corrupted file)");
+            return obj;
+        }
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);
     return obj;

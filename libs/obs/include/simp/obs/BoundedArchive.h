@@ -13,6 +13,10 @@
 #include <string>
 #include <vector>
 
+namespace mrpt::rtti {
+struct TRuntimeClassId;
+}
+
 namespace simp::obs {
 
 class BoundedArchive : public mrpt::serialization::CArchive {
@@ -44,6 +48,14 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// The robot movements of an action collection about to be read: a Thrun motion model asking
     /// for more than 1e5 particles (MRPT would allocate them all) or an unknown model is an error.
     void guardMotionModels();
+    /// Action collections and sensory frames nested inside the entry about to be read (MRPT reads
+    /// them through its own ReadObject, sized from their counts, before checking their class):
+    /// their counts are checked against the bytes left (64 KB ahead are looked at).
+    void guardNestedCounts();
+    /// readObjectGuarded() for an object that must derive from `base` (nullptr: any class), checked
+    /// from its header before it is created; action collections are read here (MRPT 2.5's reader
+    /// dereferences a non-CAction element unchecked). `depth`: nesting level (0: a file entry).
+    mrpt::serialization::CSerializable::Ptr readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth);
 
     mrpt::io::CStream& m_in;
     std::uint64_t m_size;
