@@ -3,6 +3,7 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
+#include <simp/obs/HeaderScanner.h>
 
 #include <algorithm>
 #include <cstring>
@@ -84,15 +85,6 @@ std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
     return v;
 }
 
-/// MRPT resolves a stored class name ignoring its namespace (findRegisteredClass's
-/// allow_ignore_namespace, for pre-2.0 datasets): "x::CPose2D" and "CPose2D" both read as
-/// mrpt::poses::CPose2D. A guard must match names the same way (a fuzzed "m,pt::obs::..." got past
-/// an exact match and drew 19.7 million Thrun particles).
-bool resolvesTo(const std::string& stored, const std::string& cls) {
-    const auto sep = stored.rfind("::");
-    return (sep == std::string::npos ? stored : stored.substr(sep + 2)) == cls;
-}
-
 /// The object header at `at` (MRPT 2.x: byte 0x80|length, then the name): its name, or nullopt if
 /// `at` holds no new-format header within `b`.
 std::optional<std::string> objectNameAt(const std::vector<std::uint8_t>& b, std::size_t at) {
@@ -100,46 +92,6 @@ std::optional<std::string> objectNameAt(const std::vector<std::uint8_t>& b, std:
     const std::size_t len = b[at] & 0x7f;
     if (len == 0 || at + 1 + len > b.size()) return std::nullopt;
     return std::string(reinterpret_cast<const char*>(b.data() + at + 1), len);
-}
-
-/// An object header found in a peeked window: where the object's data starts (after its version)
-/// and its version.
-struct HeaderAt {
-    std::size_t data;
-    std::uint32_t version;
-};
-
-/// Every position of `b` that MRPT 2.5's CArchive::internal_ReadObjectHeader would read as a header
-/// of class `cls`: new format (byte 0x80|length, name, int8 version) or old format (length, 0 0 0,
-/// name, int32 version); MRPT copies the name as a C string, so a NUL inside the declared length
-/// ends it ("mrpt::obs::CActionCollection\0\1\0\0" with length 33 is a collection), and
-/// findRegisteredClass ignores the namespace (resolvesTo). libFuzzer found both ways past a match
-/// of the exact name.
-std::vector<HeaderAt> headersOf(const std::vector<std::uint8_t>& b, const std::string& cls) {
-    std::vector<HeaderAt> out;
-    const std::string_view all(reinterpret_cast<const char*>(b.data()), b.size());
-    constexpr std::size_t kMaxNameLength = 120;  // MRPT rejects longer names
-    for (auto pos = all.find(cls); pos != std::string_view::npos; pos = all.find(cls, pos + 1)) {
-        const std::size_t e = pos + cls.size();  // where the resolved name ends
-        for (std::size_t l = cls.size(); l <= kMaxNameLength && l <= e; ++l) {
-            const std::size_t s = e - l;  // where the name starts
-            if (b[s] == 0) break;         // the name would end before `e`, and so for longer ones
-            if (!resolvesTo(std::string(all.substr(s, l)), cls)) continue;
-            const auto declared_ok = [&](std::size_t len) {
-                return len >= l && len <= kMaxNameLength && (len == l || (e < b.size() && b[e] == 0));
-            };
-            if (s >= 1 && (b[s - 1] & 0x80) && declared_ok(b[s - 1] & 0x7fu) && s + (b[s - 1] & 0x7fu) < b.size()) {
-                const std::size_t v = s + (b[s - 1] & 0x7fu);
-                out.push_back({v + 1, b[v]});
-            }
-            if (s >= 4 && !(b[s - 4] & 0x80) && b[s - 3] == 0 && b[s - 2] == 0 && b[s - 1] == 0 && declared_ok(b[s - 4]) &&
-                s + b[s - 4] + 4 <= b.size()) {
-                const std::size_t v = s + b[s - 4];
-                out.push_back({v + 4, u32At(b, v)});
-            }
-        }
-    }
-    return out;
 }
 
 /// Checks the motion model of a CActionRobotMovement2D whose data (after its version byte) starts
@@ -199,14 +151,13 @@ void BoundedArchive::guardMotionModels() {
     // MRPT's CActionCollection reader deserializes its actions with MRPT's own reader, which a
     // robot movement asks to draw its Thrun particles: check every robot movement ahead first,
     // whatever namespace its stored name carries, and the particles of all of them together.
-    static const std::string cls = "CActionRobotMovement2D";
     const auto& b = peek(kActionScanBytes);
     if (b.size() >= 4 && u32At(b, 0) > kMaxActionsPerCollection)
         throw std::invalid_argument(m_description + ": CActionCollection holds " + std::to_string(u32At(b, 0)) +
                                     " actions (at most " + std::to_string(kMaxActionsPerCollection) +
                                     "; corrupted file)");
     std::uint64_t particles = 0;
-    for (const auto& h : headersOf(b, cls))
+    for (const auto& h : m_movement_headers.headersIn(b, bytesRead()))
         if (h.version >= 4 && h.version <= 7) particles += checkRobotMovement2D(b, h.data, m_description);
     if (particles > kMaxThrunParticles)
         throw std::invalid_argument(m_description + ": the robot movements of one CActionCollection ask for " +
@@ -262,9 +213,9 @@ void BoundedArchive::guardNestedCounts() {
                                         " bytes left in the file can hold next to the containers before it "
                                         "(corrupted file)");
     };
-    for (const auto& h : headersOf(b, "CActionCollection"))
+    for (const auto& h : m_collection_headers.headersIn(b, bytesRead()))
         if (h.version == 0) count("CActionCollection", h.data);
-    for (const auto& h : headersOf(b, "CSensoryFrame"))
+    for (const auto& h : m_frame_headers.headersIn(b, bytesRead()))
         if (h.version <= 2) count("CSensoryFrame", h.data + (h.version == 2 ? 0 : h.version == 1 ? 4 : 12));
 }
 

@@ -7,6 +7,7 @@
 
 #include <mrpt/io/CStream.h>
 #include <mrpt/serialization/CArchive.h>
+#include <simp/obs/HeaderScanner.h>
 
 #include <cstdint>
 #include <optional>
@@ -63,6 +64,10 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     std::vector<std::uint8_t> m_peeked;   ///< fetched, not yet delivered from m_peek_pos on
     std::size_t m_peek_pos = 0;
     std::string m_description;
+    /// The headers the guards look for in the bytes ahead, each window scanned once.
+    HeaderScanner m_movement_headers{"CActionRobotMovement2D"};
+    HeaderScanner m_collection_headers{"CActionCollection"};
+    HeaderScanner m_frame_headers{"CSensoryFrame"};
 };
 
 /// The bytes `archive` can still deliver when it knows them (a BoundedArchive); nullopt for
