@@ -1,5 +1,7 @@
 // The figure style (doc/figures.md): a class has one colour in every figure whatever its id, the
 // scale bar spans its metres at the map's scale, the legend and the scale bar lie right of the map.
+#include "PixelCount.h"
+
 #include <gtest/gtest.h>
 #include <simp/eval/Canvas.h>
 #include <simp/eval/FigureColors.h>
@@ -33,13 +35,7 @@ simp::world::MapObject object(int id, int class_id, double x, double y) {
     return o;
 }
 
-int countColor(const cv::Mat3b& img, const cv::Scalar& c) {
-    const cv::Vec3b v(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
-    int n = 0;
-    for (int r = 0; r < img.rows; ++r)
-        for (int k = 0; k < img.cols; ++k) n += img(r, k) == v;
-    return n;
-}
+using simp::eval::test::countColor;
 
 }  // namespace
 

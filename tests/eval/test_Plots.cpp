@@ -1,4 +1,6 @@
 // The figures: sizes, the colours of what they show, PNG files.
+#include "PixelCount.h"
+
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
 #include <simp/eval/Canvas.h>
@@ -33,14 +35,7 @@ simp::world::World smallWorld() {
     return w;
 }
 
-/// Number of pixels of exactly this BGR colour.
-int countColor(const cv::Mat3b& img, const cv::Scalar& c) {
-    const cv::Vec3b v(static_cast<uchar>(c[0]), static_cast<uchar>(c[1]), static_cast<uchar>(c[2]));
-    int n = 0;
-    for (int r = 0; r < img.rows; ++r)
-        for (int k = 0; k < img.cols; ++k) n += img(r, k) == v;
-    return n;
-}
+using simp::eval::test::countColor;
 
 }  // namespace
 
