@@ -208,6 +208,16 @@ void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::strin
     p.check_period_s = readPositive(cfg, s, "check_period_s", p.check_period_s, true);
 }
 
+void loadChallengerParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, ChallengerParams& p) {
+    p.enabled = readBool(cfg, s, "enabled", p.enabled);
+    p.win_margin = readPositive(cfg, s, "win_margin", p.win_margin, true);
+    p.agree_distance_m = readPositive(cfg, s, "agree_distance_m", p.agree_distance_m, true);
+    p.reset_fraction = readFraction(cfg, s, "reset_fraction", p.reset_fraction);
+    const double n = readPositive(cfg, s, "particles", static_cast<double>(p.particles), true);
+    if (n != std::floor(n) || n > 1e6) throw std::invalid_argument(where(s, "particles") + " must be an integer in [0, 1e6]");
+    p.particles = static_cast<std::size_t>(n);
+}
+
 mrpt::obs::CActionRobotMovement2D::TMotionModelOptions MotionModelOptions::paperDefaults() {
     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions o;
     o.modelSelection = mrpt::obs::CActionRobotMovement2D::mmGaussian;
@@ -299,6 +309,7 @@ void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOpt
     loadNoveltyParams(cfg, "DetectionNovelty", options.novelty);
     loadResettingParams(cfg, "SensorResetting", options.resetting);
     loadSearchParams(cfg, "HypothesisSearch", options.search);
+    loadChallengerParams(cfg, "Challenger", options.challenger);
     options.lidar.loadFromConfig(cfg, "LidarModel");
 }
 

@@ -126,21 +126,26 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_floorplan(floorplan),
       m_opts(options),
       m_free(std::make_shared<FreeSpace>(floorplan, options.experiment.free_cells_threshold)),
-      m_mcl(std::make_unique<ObjectMcl>(m_map)),
+      m_mcl(makeFilter()),
       m_novelty(options.novelty),
       m_sampler(*m_map, *m_free, options.resetting.sampler),
       m_search(*m_map, m_sampler, options.search),
       m_fit(options.state),
       m_monitor(options.state) {
-    const auto& e = m_opts.experiment;
-    m_mcl->options.KLD_params = m_opts.kld;
-    m_mcl->prune_outside_free_space = e.prune_outside_free_space;
-    m_mcl->prune_keeps_weight = e.prune_keeps_weight;
-    m_mcl->singw_per_frame = e.singw_per_frame;
-    m_mcl->recovery_alpha_slow = e.recovery_alpha_slow;
-    m_mcl->recovery_alpha_fast = e.recovery_alpha_fast;
-    m_mcl->setFreeSpace(m_free);
     m_pf.m_options = m_opts.pf;
+}
+
+std::unique_ptr<ObjectMcl> Localizer::makeFilter() const {
+    const auto& e = m_opts.experiment;
+    auto mcl = std::make_unique<ObjectMcl>(m_map);
+    mcl->options.KLD_params = m_opts.kld;
+    mcl->prune_outside_free_space = e.prune_outside_free_space;
+    mcl->prune_keeps_weight = e.prune_keeps_weight;
+    mcl->singw_per_frame = e.singw_per_frame;
+    mcl->recovery_alpha_slow = e.recovery_alpha_slow;
+    mcl->recovery_alpha_fast = e.recovery_alpha_fast;
+    mcl->setFreeSpace(m_free);
+    return mcl;
 }
 
 void Localizer::startGlobal() {
@@ -149,6 +154,7 @@ void Localizer::startGlobal() {
                                  static_cast<int>(m_opts.experiment.particles_count));
     m_monitor.reset(LocalizationState::Global);
     m_summary.reset();
+    m_challenger.reset();
     m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
 }
@@ -162,31 +168,35 @@ void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, doub
     m_mcl->resetAround(pose, sigma_xy_m, sigma_phi_rad, m_opts.experiment.particles_count);
     m_monitor.reset(LocalizationState::Localized);
     m_summary.reset();
+    m_challenger.reset();
     m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
 }
 
-std::size_t Localizer::particleTarget() const {
+std::size_t Localizer::particleTarget(const ObjectMcl& mcl, LocalizationState state) const {
     const std::size_t full = m_opts.experiment.particles_count;
-    if (m_opts.experiment.tracking_min_particles == 0) return m_mcl->size();
-    if (m_monitor.state() != LocalizationState::Localized) return full;
+    if (m_opts.experiment.tracking_min_particles == 0) return mcl.size();
+    if (state != LocalizationState::Localized) return full;
     auto kld = m_opts.kld;
     kld.KLD_minSampleSize = static_cast<unsigned>(std::min(m_opts.experiment.tracking_min_particles, full));
     kld.KLD_maxSampleSize = static_cast<unsigned>(full);
-    return kldParticleCount(*m_mcl, kld);
+    return kldParticleCount(mcl, kld);
 }
 
-std::size_t Localizer::injectFromDetections(const std::vector<WeightedObservation>& observations) {
+std::size_t Localizer::injectFromDetections(ObjectMcl& mcl, LocalizationState state,
+                                            const std::vector<WeightedObservation>& observations) {
     const auto& r = m_opts.resetting;
-    const double fraction = m_monitor.state() == LocalizationState::Global   ? r.global_fraction
-                            : m_monitor.state() == LocalizationState::Lost ? r.lost_fraction
-                                                                           : r.localized_fraction;
-    const auto count = static_cast<std::size_t>(std::lround(fraction * static_cast<double>(m_mcl->size())));
+    const bool challenger = &mcl != m_mcl.get();
+    const double fraction = challenger                             ? m_opts.challenger.reset_fraction
+                            : state == LocalizationState::Global   ? r.global_fraction
+                            : state == LocalizationState::Lost     ? r.lost_fraction
+                                                                   : r.localized_fraction;
+    const auto count = static_cast<std::size_t>(std::lround(fraction * static_cast<double>(mcl.size())));
     if (count == 0) return 0;
     const auto n_uniform = static_cast<std::size_t>(std::lround(r.uniform_share * static_cast<double>(count)));
     auto& rng = mrpt::random::getRandomGenerator();
     std::vector<mrpt::math::TPose2D> poses;
-    if (!m_hypotheses.empty()) {
+    if (!m_hypotheses.empty() && !challenger) {
         // Around the places that explain the fit window best, in equal shares: the weighing that
         // follows decides between them.
         if (m_reset_targets.empty()) return 0;
@@ -203,7 +213,7 @@ std::size_t Localizer::injectFromDetections(const std::vector<WeightedObservatio
     }
     if (poses.empty()) return 0;  // nothing in view to reset from: keep the set as it is
     while (poses.size() < count) poses.push_back(m_free->drawUniform());
-    return m_mcl->inject(poses);
+    return mcl.inject(poses);
 }
 
 void Localizer::searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations) {
@@ -230,8 +240,8 @@ void Localizer::searchHypotheses(double t_s, const std::vector<WeightedObservati
         if (h.log_likelihood >= estimate_ll - m_opts.state.rival_margin) m_reset_targets.push_back(h);
 }
 
-void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<WeightedObservation>& observations,
-                       StepRecord& rec) {
+void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::poses::CPose2D* motion,
+                       const std::vector<WeightedObservation>& observations, StepRecord& rec) {
     const auto& pf = m_opts.pf;
     std::optional<mrpt::obs::CActionCollection> acts;
     if (motion) acts = makeAction(*motion, m_opts.motion);
@@ -240,34 +250,32 @@ void Localizer::update(const mrpt::poses::CPose2D* motion, const std::vector<Wei
         mrpt::obs::CSensoryFrame sf;
         for (const auto& o : observations) sf.insert(o.obs);
         mrpt::bayes::CParticleFilter::TParticleFilterStats stats;
-        m_pf.executeOn(*m_mcl, acts ? &*acts : nullptr, &sf, &stats);
-        rec.ess = stats.ESS_beforeResample * static_cast<double>(m_mcl->size());
+        m_pf.executeOn(mcl, acts ? &*acts : nullptr, &sf, &stats);
+        rec.ess = stats.ESS_beforeResample * static_cast<double>(mcl.size());
     } else {
         // CParticleFilter::executeOn's steps, with sensor resetting before the weights and the
         // particle count chosen at resampling.
-        m_mcl->predict(acts ? &*acts : nullptr, pf);
-        injectFromDetections(observations);
-        m_mcl->weigh(observations, pf.powFactor);
+        mcl.predict(acts ? &*acts : nullptr, pf);
+        injectFromDetections(mcl, state, observations);
+        mcl.weigh(observations, pf.powFactor);
         if (m_scan_model && m_pending_scan) {
-            m_mcl->weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
-            m_pending_scan.reset();
-            ++m_scans_used;
+            mcl.weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
         }
-        m_mcl->normalizeWeights();
-        const double ess = m_mcl->ESS();
-        rec.ess = ess * static_cast<double>(m_mcl->size());
-        rec.injected = m_mcl->lastInjectedCount();  // recovery and sensor resetting (inject() counts itself)
+        mcl.normalizeWeights();
+        const double ess = mcl.ESS();
+        rec.ess = ess * static_cast<double>(mcl.size());
+        rec.injected = mcl.lastInjectedCount();  // recovery and sensor resetting (inject() counts itself)
         if (!pf.adaptiveSampleSize) {
-            const std::size_t target = particleTarget();
-            if (target != m_mcl->size())
-                m_mcl->resampleTo(target);
+            const std::size_t target = particleTarget(mcl, state);
+            if (target != mcl.size())
+                mcl.resampleTo(target);
             else if (ess < pf.BETA)
-                m_mcl->performResampling(pf);
+                mcl.performResampling(pf);
         }
     }
     rec.updated = true;
-    rec.detections = m_mcl->lastDetectionCount();
-    rec.pruned = m_mcl->lastPrunedCount();
+    rec.detections = mcl.lastDetectionCount();
+    rec.pruned = mcl.lastPrunedCount();
 }
 
 StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_increment,
@@ -292,7 +300,15 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const auto all = m_skipped.merge(observations, m_pending);
         searchHypotheses(t_s, all);
         const bool no_motion = m_first && m_pending.norm() == 0 && m_pending.phi() == 0;
-        update(no_motion ? nullptr : &m_pending, all, rec);
+        update(*m_mcl, m_monitor.state(), no_motion ? nullptr : &m_pending, all, rec);
+        if (m_challenger) {
+            StepRecord ignored;
+            update(*m_challenger->mcl, m_challenger->monitor.state(), no_motion ? nullptr : &m_pending, all, ignored);
+        }
+        if (m_scan_model && m_pending_scan && m_opts.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfStandardProposal) {
+            m_pending_scan.reset();
+            ++m_scans_used;
+        }
         m_pending = mrpt::poses::CPose2D();
         m_first = false;
     } else if (e.keep_skipped_detections) {
@@ -300,9 +316,26 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     }
 
     if (trigger || !m_summary) m_summary = summarizeParticles(*m_mcl, e);
-    const ParticleSummary& s = *m_summary;
     // The pose now: the filter's estimate moved by the odometry it has not applied yet.
-    const mrpt::poses::CPose2D now = mrpt::poses::CPose2D(s.estimate) + m_pending;
+    auto now = mrpt::poses::CPose2D(m_summary->estimate) + m_pending;
+    auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
+    if (trigger && !m_hypotheses.empty())
+        fit.rival_advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, now.asTPose(), m_odometry);
+    if (trigger) {
+        const auto before = m_monitor.state();
+        const ParticleSummary& s = *m_summary;
+        m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
+                         rec.detections > 0);
+        // The detections of the lost hypothesis say nothing about the next one, unless a rival
+        // place explained them (then they are what will find it again).
+        const bool rival_won = fit.rival_advantage >= m_opts.state.rival_lost_margin;
+        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost && !rival_won) m_fit.clear();
+        if (challenge(t_s, now, rec.detections > 0, before)) {  // the challenger's set is the filter now
+            now = mrpt::poses::CPose2D(m_summary->estimate) + m_pending;
+            fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
+        }
+    }
+    const ParticleSummary& s = *m_summary;
     rec.estimate = now.asTPose();
     rec.mean = s.mean;
     rec.cov = s.cov;
@@ -310,23 +343,55 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     rec.cluster_weight = s.cluster_weight;
     rec.particles = s.particle_count;
     if (!trigger) rec.ess = s.ess;
-    auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
-    if (trigger && !m_hypotheses.empty())
-        fit.rival_advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, now.asTPose(), m_odometry);
     rec.fit = fit.fraction;
     rec.fit_detections = fit.scored;
     rec.rival_advantage = fit.rival_advantage;
-    if (trigger) {
-        const auto before = m_monitor.state();
-        m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
-                         rec.detections > 0);
-        // The detections of the lost hypothesis say nothing about the next one, unless a rival
-        // place explained them (then they are what will find it again).
-        const bool rival_won = fit.rival_advantage >= m_opts.state.rival_lost_margin;
-        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost && !rival_won) m_fit.clear();
-    }
+    rec.challenger_particles = m_challenger ? m_challenger->mcl->size() : 0;
     rec.state = m_monitor.state();
     return rec;
+}
+
+bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_detections, LocalizationState before) {
+    const auto& c = m_opts.challenger;
+    const auto state = m_monitor.state();
+    if (m_challenger && state == LocalizationState::Localized) m_challenger.reset();  // the `lost` was false
+    if (!c.enabled || state != LocalizationState::Lost) return false;
+    const std::size_t n = c.particles > 0 ? c.particles : m_opts.experiment.particles_count;
+    const auto start = [&] {
+        auto grid = m_floorplan;  // MRPT's reset takes a non-const map
+        m_challenger.emplace(Challenger{makeFilter(), StateMonitor(m_opts.state), std::nullopt});
+        m_challenger->mcl->resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold, static_cast<int>(n));
+        ++m_challengers_started;
+    };
+    if (!m_challenger) {
+        if (before != LocalizationState::Lost) start();  // updated from the next update on
+        return false;
+    }
+    auto& ch = *m_challenger;
+    ch.summary = summarizeParticles(*ch.mcl, m_opts.experiment);
+    const auto ch_now = mrpt::poses::CPose2D(ch.summary->estimate) + m_pending;
+    const auto ch_fit = m_fit.evaluate(*m_map, ch_now, m_odometry, t_s);
+    ch.monitor.update(ch.summary->cluster_weight,
+                      std::sqrt(ch.summary->cluster_cov(0, 0) + ch.summary->cluster_cov(1, 1)), ch_fit, had_detections);
+    if (ch.monitor.state() == LocalizationState::Lost) {  // it settled on a wrong place: search again
+        start();
+        return false;
+    }
+    if (ch.monitor.state() != LocalizationState::Localized) return false;
+    // Both estimates scored on the detections since `lost` (the fit window, each detection at the
+    // pose of its own frame). Near the current estimate it is the same place: it takes over when it
+    // explains them at least as well (it passes the tests the current set fails now); elsewhere it
+    // must explain them better by win_margin.
+    std::vector<double> log_lik;
+    m_fit.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
+    const bool near = (ch_now.asTPose() - now.asTPose()).norm() <= c.agree_distance_m;
+    if (log_lik[1] - log_lik[0] < (near ? 0.0 : c.win_margin)) return false;
+    m_mcl = std::move(ch.mcl);
+    m_summary = ch.summary;
+    m_monitor = ch.monitor;
+    m_challenger.reset();
+    ++m_challengers_won;
+    return true;
 }
 
 }  // namespace simp::localization

@@ -10,7 +10,7 @@ namespace simp::localization {
 std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
            "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
-           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats";
+           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles";
 }
 
 std::string stepsCsvLine(const StepRecord& s) {
@@ -27,11 +27,12 @@ std::string stepsCsvLine(const StepRecord& s) {
     std::string out(line);
     out.pop_back();  // the newline, after the rival column
     if (std::isfinite(s.rival_advantage)) {
-        std::snprintf(line, sizeof(line), ",%.3f\n", s.rival_advantage);
+        std::snprintf(line, sizeof(line), ",%.3f", s.rival_advantage);
         out += line;
     } else {
-        out += ",\n";
+        out += ",";
     }
+    out += "," + std::to_string(s.challenger_particles) + "\n";
     return out;
 }
 

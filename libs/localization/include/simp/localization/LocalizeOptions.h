@@ -77,11 +77,13 @@ struct StateParams;
 struct DetectionNoveltyParams;
 struct SensorResettingParams;
 struct HypothesisSearchParams;
-/// [State], [DetectionNovelty], [SensorResetting], [HypothesisSearch] (missing keys keep their defaults).
+struct ChallengerParams;
+/// [State], [DetectionNovelty], [SensorResetting], [HypothesisSearch], [Challenger] (missing keys keep their defaults).
 void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, StateParams& p);
 void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, DetectionNoveltyParams& p);
 void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, SensorResettingParams& p);
 void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, HypothesisSearchParams& p);
+void loadChallengerParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, ChallengerParams& p);
 
 /// [PF_options] settings that MRPT needs together: KLD sampling (adaptiveSampleSize = true) in MRPT
 /// 2.5's 2D MCL draws with multinomial resampling only, so it sets resamplingMethod = prMultinomial.

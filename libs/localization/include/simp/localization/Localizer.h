@@ -37,6 +37,23 @@ struct SensorResettingParams {
     DetectionPoseSamplerParams sampler;
 };
 
+/// [Challenger]: recovery from a kidnap without giving up the current hypothesis. When the state
+/// turns `lost`, a second particle set starts a global search (uniform over the free space, as at
+/// the start, `reset_fraction` of it reset from the detections at each update) beside the current
+/// one. Both are updated with the same odometry and detections. The challenger replaces the current
+/// set when its own state is `localized` and it is either within `agree_distance_m` of the current
+/// estimate (the same place, better told) or explains the detections seen since `lost` (the fit
+/// window) better than the current estimate by `win_margin` nats. It is dropped when the current set
+/// is `localized` again (the `lost` was false). A false `lost` thus costs CPU, never the track (a
+/// restart on `lost` lost 9 of 16 tracking runs, doc/results-localization.md).
+struct ChallengerParams {
+    bool enabled = true;
+    double win_margin = 3.0;        ///< nats (log-likelihood of the fit window)
+    double agree_distance_m = 1.0;  ///< closer to the current estimate than this: the same place
+    double reset_fraction = 0.3;    ///< of its particles reset from the detections per update ([SensorResetting] draws)
+    std::size_t particles = 0;      ///< particles of the challenger (0: [LocalizationExperiment] particles_count)
+};
+
 /// Everything the localizer reads from the .ini.
 struct LocalizerOptions {
     ExperimentOptions experiment;
@@ -47,6 +64,7 @@ struct LocalizerOptions {
     DetectionNoveltyParams novelty;
     SensorResettingParams resetting;
     HypothesisSearchParams search;
+    ChallengerParams challenger;
     LidarModelOptions lidar;  ///< [LidarModel]: used by sensor_model lidar / simp+lidar only
 
     /// pfStandardProposal, prSystematic, no adaptive size, BETA 0.5 (MRPT's section defaults).
@@ -81,6 +99,9 @@ class Localizer {
         m_scan_model = std::move(model);
         m_use_objects = use_objects;
     }
+    /// Challengers started and challengers that replaced the current set, so far ([Challenger]).
+    std::size_t challengersStarted() const { return m_challengers_started; }
+    std::size_t challengersWon() const { return m_challengers_won; }
     /// Scans weighed so far.
     std::size_t scansUsed() const { return m_scans_used; }
 
@@ -89,18 +110,33 @@ class Localizer {
     const LocalizerOptions& options() const { return m_opts; }
 
    private:
-    void update(const mrpt::poses::CPose2D* motion, const std::vector<WeightedObservation>& observations,
-                StepRecord& rec);
-    std::size_t injectFromDetections(const std::vector<WeightedObservation>& observations);
+    /// One filter update of `mcl` (the current set or the challenger) whose state is `state`.
+    void update(ObjectMcl& mcl, LocalizationState state, const mrpt::poses::CPose2D* motion,
+                const std::vector<WeightedObservation>& observations, StepRecord& rec);
+    std::size_t injectFromDetections(ObjectMcl& mcl, LocalizationState state,
+                                     const std::vector<WeightedObservation>& observations);
+    std::unique_ptr<ObjectMcl> makeFilter() const;
+    /// After the state update ([Challenger]): starts the challenger when the state turns `lost`,
+    /// judges it after its updates, drops it when the state is `localized` again. True when the
+    /// challenger replaced the current set (m_mcl, m_summary, m_monitor are then its own).
+    bool challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_detections, LocalizationState before);
     /// Runs the hypothesis search when due (m_hypotheses is empty otherwise).
     void searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations);
-    std::size_t particleTarget() const;
+    std::size_t particleTarget(const ObjectMcl& mcl, LocalizationState state) const;
 
     std::shared_ptr<const maps::CObjectMap> m_map;
     const mrpt::maps::COccupancyGridMap2D& m_floorplan;
     LocalizerOptions m_opts;
     std::shared_ptr<FreeSpace> m_free;
     std::unique_ptr<ObjectMcl> m_mcl;
+    /// The challenger while `lost` ([Challenger]); null otherwise.
+    struct Challenger {
+        std::unique_ptr<ObjectMcl> mcl;
+        StateMonitor monitor;
+        std::optional<ParticleSummary> summary;
+    };
+    std::optional<Challenger> m_challenger;
+    std::size_t m_challengers_started = 0, m_challengers_won = 0;
     mrpt::bayes::CParticleFilter m_pf;
     DetectionNovelty m_novelty;
     DetectionPoseSampler m_sampler;

@@ -32,6 +32,7 @@ struct StepRecord {
     /// Window log-likelihood of the best distinct place minus the estimate's (nats; HypothesisSearch);
     /// NaN when not searched at this frame (written empty).
     double rival_advantage = std::numeric_limits<double>::quiet_NaN();
+    std::size_t challenger_particles = 0;  ///< particles of the challenger searching while `lost` (0: none)
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 

@@ -1,0 +1,132 @@
+/// The challenger of Localizer ([Challenger]): a second particle set that searches while the state
+/// is `lost`, replaces the current set only when it explains the detections since `lost` better,
+/// and never takes over after a false `lost`. On the synthetic scenario, end to end.
+
+#include "SyntheticScenario.h"
+#include "TestUtil.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <simp/localization/Localizer.h>
+#include <simp/localization/RawlogSequence.h>
+
+#include <cmath>
+
+using namespace simp::localization;
+using namespace simp::localization::test;
+
+namespace {
+
+/// simp.ini's defaults, 2000 particles, and no particles reset from the detections while lost:
+/// only the challenger can bring a kidnapped robot back.
+LocalizerOptions challengerOnlyOptions(bool challenger) {
+    LocalizerOptions opts;
+    opts.experiment.particles_count = 2000;
+    opts.resetting.lost_fraction = 0.0;
+    opts.challenger.enabled = challenger;
+    return opts;
+}
+
+std::size_t frameAt(const RawlogSequence& seq, double t_rel_s) {
+    std::size_t f = 0;
+    while (f + 1 < seq.frames.size() && seq.frames[f].t_s - seq.frames.front().t_s < t_rel_s) ++f;
+    return f;
+}
+
+struct KidnapRun {
+    double lost_after = -1, localized_after = -1;
+    double worst_error_localized_m = 0;  ///< after the kidnap, over the `localized` steps
+    std::size_t started = 0, won = 0;
+};
+
+/// Frames [0, cut), then frames [resume, end) with no odometry jump: the robot was carried.
+KidnapRun runKidnap(const LocalizerOptions& opts, double cut_s, double resume_s) {
+    const Scenario& sc = sharedScenario();
+    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
+    mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
+    Localizer loc(makeMap(sc.world), sc.world.floorplan, opts);
+    loc.startGlobal();
+    const std::size_t cut = frameAt(seq, cut_s), resume = frameAt(seq, resume_s);
+    StepRecord rec;
+    for (std::size_t f = 0; f < cut; ++f)
+        rec = loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
+    EXPECT_EQ(rec.state, LocalizationState::Localized);
+    EXPECT_LT(translationError(rec.estimate, sc.groundtruth[cut - 1].pose), 0.3);
+    KidnapRun run;
+    for (std::size_t f = resume; f < seq.frames.size(); ++f) {
+        const double t = seq.frames[f].t_s - seq.frames[resume].t_s;
+        rec = loc.step(seq.frames[f].t_s, f == resume ? mrpt::poses::CPose2D() : seq.frames[f].odometry_increment,
+                       *seq.frames[f].observations);
+        if (run.lost_after < 0 && rec.state != LocalizationState::Localized) run.lost_after = t;
+        if (run.lost_after >= 0 && run.localized_after < 0 && rec.state == LocalizationState::Localized)
+            run.localized_after = t;
+        if (run.localized_after >= 0 && rec.state == LocalizationState::Localized)
+            run.worst_error_localized_m =
+                std::max(run.worst_error_localized_m, translationError(rec.estimate, sc.groundtruth[f].pose));
+    }
+    run.started = loc.challengersStarted();
+    run.won = loc.challengersWon();
+    return run;
+}
+
+}  // namespace
+
+TEST(Challenger, BringsAKidnappedRobotBackWhenNothingElseDoes) {
+    // Carried from its place at 20 s to where it is at 30 s (ASSERT in the kidnap test of
+    // test_localizer.cpp: more than 1 m away).
+    const KidnapRun with = runKidnap(challengerOnlyOptions(true), 20.0, 30.0);
+    EXPECT_GE(with.lost_after, 0.0) << "never lost";
+    EXPECT_LE(with.lost_after, 5.0);
+    ASSERT_GE(with.localized_after, 0.0) << "never localized again";
+    EXPECT_LE(with.localized_after, 20.0);
+    EXPECT_LT(with.worst_error_localized_m, 0.3);  // a `localized` that can be trusted
+    EXPECT_GE(with.started, 1u);
+    EXPECT_EQ(with.won, 1u);
+
+    // The same run without it: the old set alone does not find the new place in that time.
+    const KidnapRun without = runKidnap(challengerOnlyOptions(false), 20.0, 30.0);
+    EXPECT_EQ(without.started, 0u);
+    EXPECT_TRUE(without.localized_after < 0 || without.localized_after > with.localized_after ||
+                without.worst_error_localized_m >= 0.3);
+}
+
+TEST(Challenger, AFalseLostNeverHandsTheTrackToIt) {
+    // The robot sees nothing it expects for a while (frames of another place, without their odometry),
+    // then its own frames again: the current set is right all along and must stay the filter.
+    const Scenario& sc = sharedScenario();
+    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
+    mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
+    Localizer loc(makeMap(sc.world), sc.world.floorplan, challengerOnlyOptions(true));
+    loc.startGlobal();
+    const std::size_t cut = frameAt(seq, 20.0), back = frameAt(seq, 25.0);
+    std::size_t elsewhere = 0;  // the frame farthest from where the robot stands
+    for (std::size_t f = 0; f + 50 < seq.frames.size(); ++f)
+        if (translationError(sc.groundtruth[f].pose, sc.groundtruth[cut].pose) >
+            translationError(sc.groundtruth[elsewhere].pose, sc.groundtruth[cut].pose))
+            elsewhere = f;
+    StepRecord rec;
+    for (std::size_t f = 0; f < cut; ++f)
+        rec = loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
+    ASSERT_EQ(rec.state, LocalizationState::Localized);
+    // 5 s of another place's detections, the robot turning on the spot left and right (an update
+    // at every frame, back where it was after an even number of frames).
+    const double t_cut = seq.frames[cut].t_s;
+    bool lost = false;
+    for (std::size_t k = 0; k < 50; ++k) {
+        const mrpt::poses::CPose2D turn(0, 0, (k % 2 == 0 ? 0.3 : -0.3));
+        rec = loc.step(t_cut + 0.1 * static_cast<double>(k), turn, *seq.frames[elsewhere + k].observations);
+        lost = lost || rec.state == LocalizationState::Lost;
+    }
+    ASSERT_TRUE(lost) << "the scene must have made the state lost for this test to say anything";
+    ASSERT_GE(loc.challengersStarted(), 1u);
+    // Its own frames again, from where it stands (cut), with their odometry, time shifted by 5 s.
+    for (std::size_t f = cut; f < back + 150 && f < seq.frames.size(); ++f) {
+        rec = loc.step(seq.frames[f].t_s + 5.0, seq.frames[f].odometry_increment, *seq.frames[f].observations);
+        if (rec.state == LocalizationState::Localized) {
+            EXPECT_LT(translationError(rec.estimate, sc.groundtruth[f].pose), 0.3) << "at frame " << f;
+        }
+    }
+    EXPECT_EQ(rec.state, LocalizationState::Localized);
+    EXPECT_EQ(loc.challengersWon(), 0u);
+    EXPECT_LT(translationError(rec.estimate, sc.groundtruth[std::min(back + 149, seq.frames.size() - 1)].pose), 0.3);
+}
