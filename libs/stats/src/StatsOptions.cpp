@@ -16,7 +16,7 @@ const io::OptionTable<StatsOptions>& StatsOptions::table() {
             .choice("fit_source", &O::fit_source, {"samples", "histogram"},
                     "`samples`: fit to the exact offsets; `histogram`: fit to the 5 cm histogram")
             .number("outlier_mahalanobis", &O::outlier_mahalanobis, "", ValueRange::atLeast(0),
-                    "> 0: robust fit, samples beyond this Mahalanobis radius are rejected (see below); 0 = off")
+                    "> 0: robust fit, samples beyond this Mahalanobis radius are rejected; 0 = off")
             .integer("min_samples", &O::min_samples, ValueRange::atLeast(3),
                      "classes with fewer matched predictions are not modelled (empty CSV row, no JSON entry)")
             .number("plot_half_extent_m", &O::plot_half_extent_m, "m", ValueRange::atLeast(0),
