@@ -5,17 +5,18 @@
 /// (doc/plugin.md "pf-localization"), except that it exits without waiting for a key on errors.
 #include <mrpt/apps/MonteCarloLocalization_App.h>
 #include <mrpt/core/exceptions.h>
+#include <simp/io/CommandLine.h>
 #include <simp/mapping/registerAllClasses.h>
 #include <simp/maps/registerAllClasses.h>
 #include <simp/obs/registerAllClasses.h>
 
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -49,30 +50,39 @@ std::string messagesOf(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc >= 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
-        std::cout << "usage: simp-pf-localization CONFIG.ini [DATASET.rawlog]\n"
-                     "  MRPT's pf-localization (mrpt::apps::MonteCarloLocalization_Rawlog) with the project's\n"
-                     "  plugins (libsimp_obs, libsimp_maps, libsimp_mapping) linked: no LD_PRELOAD needed. Configuration:\n"
-                     "  config_ini/pf-localization.ini; see doc/plugin.md.\n";
-        return 0;
+    simp::io::CommandLine args("simp-pf-localization",
+                               "MRPT's pf-localization (mrpt::apps::MonteCarloLocalization_Rawlog) with the project's plugins\n"
+                               "(libsimp_obs, libsimp_maps, libsimp_mapping) linked: no LD_PRELOAD needed. Configuration:\n"
+                               "config_ini/pf-localization.ini; see doc/plugin.md.");
+    args.positional("CONFIG.ini", "the configuration (MRPT's pf-localization .ini)", true)
+        .positional("DATASET.rawlog", "the rawlog (overrides the .ini's rawlog_file)", false);
+    try {
+        if (!args.parse(argc, argv, std::cout)) return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "simp-pf-localization: error: " << e.what() << "\n";
+        return 1;
     }
-    if (argc >= 2) {
-        if (!std::ifstream(argv[1])) {
-            std::cerr << "simp-pf-localization: error: " << argv[1] << ": configuration file not found\n";
-            return 1;
-        }
-        if (const std::string unset = unsetEnvironmentVariables(argv[1]); !unset.empty()) {
-            std::cerr << "simp-pf-localization: error: " << argv[1] << " uses $env{...} of unset environment variables: "
-                      << unset << " (doc/plugin.md)\n";
-            return 1;
-        }
+    const std::string config = args.positionals().front();
+    if (!std::ifstream(config)) {
+        std::cerr << "simp-pf-localization: error: " << config << ": configuration file not found\n";
+        return 1;
     }
+    if (const std::string unset = unsetEnvironmentVariables(config); !unset.empty()) {
+        std::cerr << "simp-pf-localization: error: " << config << " uses $env{...} of unset environment variables: "
+                  << unset << " (doc/plugin.md)\n";
+        return 1;
+    }
+    // MRPT's own command line: the program, CONFIG.ini [, DATASET.rawlog]
+    std::vector<std::string> mrpt_args{argc > 0 ? argv[0] : "simp-pf-localization"};
+    mrpt_args.insert(mrpt_args.end(), args.positionals().begin(), args.positionals().end());
+    std::vector<const char*> mrpt_argv;
+    for (const auto& a : mrpt_args) mrpt_argv.push_back(a.c_str());
     try {
         simp::obs::registerAllClasses();
         simp::maps::registerAllClasses();
         simp::mapping::registerAllClasses();
         mrpt::apps::MonteCarloLocalization_Rawlog app;
-        app.initialize(argc, argv);
+        app.initialize(static_cast<int>(mrpt_argv.size()), mrpt_argv.data());
         app.run();
         return 0;
     } catch (const std::exception& e) {

@@ -1,6 +1,6 @@
 // simp-example-rawlog: writes a small deterministic rawlog of 3D-object observations,
 // e.g. to try `rawlog-edit --plugins build/lib/libsimp_obs.so --info -i example.rawlog`.
-#include <simp/io/StrictNumber.h>
+#include <simp/io/CommandLine.h>
 #include <simp/obs/ExampleRawlog.h>
 #include <simp/obs/InputLimits.h>
 
@@ -10,42 +10,25 @@
 #include <limits>
 #include <string>
 
-namespace {
-
-/// A count within the documented range (ExampleRawlog.h), strictly parsed: "-1", "3x", "1e3" are errors.
-std::size_t parseCount(const std::string& option, const std::string& text, std::size_t lo, std::size_t hi) {
-    return static_cast<std::size_t>(
-        simp::io::parseInteger(text, "option " + option, static_cast<std::int64_t>(lo), static_cast<std::int64_t>(hi)));
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
     try {
         simp::obs::ExampleRawlogParams p;
-        std::string out;
-        for (int i = 1; i < argc; ++i) {
-            const std::string a = argv[i];
-            auto next = [&]() -> std::string {
-                if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value");
-                return argv[++i];
-            };
-            if (a == "--help" || a == "-h") {
-                std::cout << "Usage: simp-example-rawlog --out FILE.rawlog [--frames N] [--cameras N] "
-                             "[--detections N] [--seed S]\n"
-                             "Writes a deterministic rawlog of simp::obs::CObservationObjects3D (one per camera\n"
-                             "per frame) for trying MRPT's tools with the plugin.\n";
-                return 0;
-            } else if (a == "--out") out = next();
-            else if (a == "--frames") p.frames = parseCount(a, next(), 1, simp::obs::kMaxExampleFrames);
-            else if (a == "--cameras") p.cameras = parseCount(a, next(), 1, simp::obs::kMaxExampleCameras);
-            else if (a == "--detections") p.detections = parseCount(a, next(), 0, simp::obs::limits::kMaxDetectionsPerFrame);
-            else if (a == "--seed")
-                p.seed = static_cast<std::uint64_t>(
-                    simp::io::parseInteger(next(), "option --seed", 0, std::numeric_limits<std::int64_t>::max()));
-            else throw std::invalid_argument("unknown option '" + a + "' (see --help)");
-        }
-        if (out.empty()) throw std::invalid_argument("missing --out FILE.rawlog (see --help)");
+        simp::io::CommandLine args("simp-example-rawlog",
+                                   "Writes a deterministic rawlog of simp::obs::CObservationObjects3D (one per camera\n"
+                                   "per frame) for trying MRPT's tools with the plugin.");
+        args.required("out", "FILE.rawlog", "the rawlog to write")
+            .option("frames", "N", "frames, in [1, " + std::to_string(simp::obs::kMaxExampleFrames) + "]")
+            .option("cameras", "N", "cameras, in [1, " + std::to_string(simp::obs::kMaxExampleCameras) + "]")
+            .option("detections", "N", "detections per frame, in [0, " + std::to_string(simp::obs::limits::kMaxDetectionsPerFrame) + "]")
+            .option("seed", "S", "random seed");
+        if (!args.parse(argc, argv, std::cout)) return 0;
+        const std::string out = args.value("out");
+        using Count = std::int64_t;
+        if (auto n = args.integer("frames", 1, static_cast<Count>(simp::obs::kMaxExampleFrames))) p.frames = static_cast<std::size_t>(*n);
+        if (auto n = args.integer("cameras", 1, static_cast<Count>(simp::obs::kMaxExampleCameras))) p.cameras = static_cast<std::size_t>(*n);
+        if (auto n = args.integer("detections", 0, static_cast<Count>(simp::obs::limits::kMaxDetectionsPerFrame)))
+            p.detections = static_cast<std::size_t>(*n);
+        if (auto s = args.integer("seed", 0, std::numeric_limits<Count>::max())) p.seed = static_cast<std::uint64_t>(*s);
         simp::obs::validateExampleRawlogParams(p);  // before creating the file
         const auto n = simp::obs::writeExampleRawlog(out, p);
         std::cout << "Wrote " << n << " observations in " << p.frames << " frames to " << out << "\n";

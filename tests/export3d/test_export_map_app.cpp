@@ -77,7 +77,7 @@ TEST(ExportMapApp, BadCommandLinesSayWhatIsWrong) {
     const std::string dir = simp_test::freshDir();
     simp::world::saveWorld(simp_test::smallWorld(), dir + "/W");
     EXPECT_NE(runApp({"--world", dir + "/W"}).find("nothing to write"), std::string::npos);
-    EXPECT_NE(runApp({"--gridmap", "x.gridmap"}).find("missing --world"), std::string::npos);
+    EXPECT_NE(runApp({"--gridmap", "x.gridmap"}).find("missing required option --world W"), std::string::npos);
     EXPECT_NE(runApp({"--world", dir + "/W", "--gridmap", "x.gridmap", "--resolution", "0.1"}).find("--octomap"),
               std::string::npos);
     EXPECT_NE(runApp({"--world", dir + "/W", "--octomap", dir + "/m.bt", "--resolution", "0.1x"}).find("--resolution"),

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <simp/model/NoiseFrame.h>
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <simp/labels/DetectionRawlog.h>
@@ -14,6 +15,7 @@
 #include <simp/world/ObjectMapData.h>
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -266,4 +268,31 @@ TEST(StatsOptions, ExampleIniHoldsTheDefaults) {
     EXPECT_EQ(o.fit_source, defaults.fit_source);
     EXPECT_DOUBLE_EQ(o.cell_size_m, 0.05);
     EXPECT_EQ(o.min_samples, defaults.min_samples);
+}
+
+TEST(StatsOptions, DocumentationAndExampleFollowTheDeclaration) {
+    // doc/statistics.md's key table is StatsOptions::table().markdown() verbatim
+    std::ifstream doc(std::string(SIMP_SOURCE_DIR) + "/doc/statistics.md");
+    const std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+    const std::string table = stats::StatsOptions::table().markdown(stats::StatsOptions{});
+    EXPECT_NE(text.find(table), std::string::npos) << "doc/statistics.md should hold:\n" << table;
+    // the example .ini sets every declared key, and nothing else
+    mrpt::config::CConfigFile cfg(std::string(SIMP_SOURCE_DIR) + "/tests/data/detector_io/simp-stats.ini");
+    std::vector<std::string> keys;
+    cfg.getAllKeys("simp-stats", keys);
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::string> declared = stats::StatsOptions::table().keys();
+    std::sort(declared.begin(), declared.end());
+    EXPECT_EQ(keys, declared);
+    // the dump of what is used reads back to the same options
+    stats::StatsOptions o;
+    o.delta_m = 0.75, o.min_samples = 5, o.fit_source = "histogram";
+    std::ostringstream dump;
+    o.dumpToTextStream(dump);
+    mrpt::config::CConfigFileMemory back(dump.str());
+    stats::StatsOptions r;
+    r.loadFromConfigFile(back, "simp-stats");
+    EXPECT_DOUBLE_EQ(r.delta_m, 0.75);
+    EXPECT_EQ(r.min_samples, 5);
+    EXPECT_EQ(r.fit_source, "histogram");
 }

@@ -383,7 +383,7 @@ TEST(MapConvertApps, ImportThenExportInProcess) {
         EXPECT_TRUE(std::filesystem::exists(d + "/" + f)) << f;
     const char* bad[] = {"simp-import-map", "--simp-dir", "x"};
     ImportMapApp app2;
-    EXPECT_THAT(errorOf([&] { app2.initialize(3, bad); }), HasSubstr("missing --out W"));
+    EXPECT_THAT(errorOf([&] { app2.initialize(3, bad); }), HasSubstr("missing required option --out W"));
 }
 
 // ---- The authors' real map (skipped when ../shared/data/simp-office is absent). ----

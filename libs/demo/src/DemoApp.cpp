@@ -5,7 +5,7 @@
 #include <simp/eval/Plots.h>
 #include <simp/eval/TrajectoryMetrics.h>
 #include <simp/io/StrictIni.h>
-#include <simp/io/StrictNumber.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/Tum.h>
 #include <simp/localization/LocalizeApp.h>
 #include <simp/mapping/MapApp.h>
@@ -65,59 +65,58 @@ std::string projectFile(const std::string& relative) {
 std::string DemoOptions::defaultLocalizationConfig() { return projectFile("config_ini/simp.ini"); }
 std::string DemoOptions::defaultMappingConfig() { return projectFile("config_ini/mapping.ini"); }
 
-std::string DemoApp::usage() {
-    return "Usage: simp-demo [--out DIR] [--seed S] [--rooms N] [--particles N] [--method simp|edt|d|o]\n"
-           "                 [--runs N] [--mapping-duration SEC] [--duration SEC]\n"
-           "                 [--config LOCALIZATION.ini] [--mapping-config MAPPING.ini] [--no-kidnap]\n"
-           "Runs the whole pipeline on the built-in office world (no external data): builds the world,\n"
-           "simulates a mapping run, builds the object map from posed detections, simulates localization\n"
-           "runs with long-term changes (0 %, 15 %, 30 %, ...), localizes globally in the built map with the\n"
-           "paper's sensor model, prints success / convergence time / ATE per run and writes PNGs to DIR\n"
-           "(default demo_out). A kidnapped run K1 (15 % changes, teleported at half its duration) follows\n"
-           "unless --no-kidnap: lost within 5 s, localized again within 20 s, then tracked.\n";
+io::CommandLine DemoApp::commandLine() {
+    io::CommandLine c("simp-demo",
+                      "Runs the whole pipeline on the built-in office world (no external data): builds the world,\n"
+                      "simulates a mapping run, builds the object map from posed detections, simulates localization\n"
+                      "runs with long-term changes (0 %, 15 %, 30 %, ...), localizes globally in the built map with the\n"
+                      "paper's sensor model, prints success / convergence time / ATE per run and writes PNGs to DIR.\n"
+                      "A kidnapped run K1 (15 % changes, teleported at half its duration) follows unless --no-kidnap:\n"
+                      "lost within 5 s, localized again within 20 s, then tracked.");
+    c.option("out", "DIR", "output directory (default demo_out)")
+        .option("seed", "S", "random seed of the world and the sequences")
+        .option("rooms", "N", "rooms of the built-in office, in [2, 2000]")
+        .option("particles", "N", "particle count, in [10, 500000]")
+        .option("method", "simp|edt|d|o", "sensor model")
+        .option("runs", "N", "localization runs with 0 %, 15 %, 30 %, ... changes, in [1, 10]")
+        .option("mapping-duration", "SEC", "duration of the mapping run")
+        .unit("s")
+        .option("duration", "SEC", "duration of each localization run")
+        .unit("s")
+        .option("config", "LOCALIZATION.ini", "localization .ini (default config_ini/simp.ini)")
+        .option("mapping-config", "MAPPING.ini", "mapping .ini (default config_ini/mapping.ini)")
+        .flag("no-kidnap", "no kidnapped run K1");
+    return c;
 }
 
+std::string DemoApp::usage() { return commandLine().help(); }
+
 bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out) {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size()) throw std::invalid_argument("option " + a + " needs a value");
-            return args[++i];
-        };
-        if (a == "--help" || a == "-h") {
-            out << usage();
-            return false;
-        } else if (a == "--out") {
-            options.out_dir = value();
-        } else if (a == "--seed") {
-            options.seed = static_cast<std::uint64_t>(io::parseInteger(value(), "option --seed", 0, kMaxSeed));
-        } else if (a == "--rooms") {
-            options.rooms = static_cast<int>(io::parseInteger(value(), "option --rooms", 2, 2000));
-        } else if (a == "--particles") {
-            options.particles = static_cast<int>(io::parseInteger(value(), "option --particles", 10, kMaxParticles));
-        } else if (a == "--method") {
-            options.method = value();
-            if (options.method != "simp" && options.method != "edt" && options.method != "d" && options.method != "o")
-                throw std::invalid_argument("option --method: '" + options.method + "' is not simp, edt, d or o");
-        } else if (a == "--runs") {
-            const int n = static_cast<int>(io::parseInteger(value(), "option --runs", 1, 10));
-            options.changes.clear();
-            for (int k = 0; k < n; ++k) options.changes.push_back(0.15 * k);
-        } else if (a == "--mapping-duration") {
-            options.mapping_duration_s = io::parseNumber(value(), "option --mapping-duration (s)", 1, sim::kMaxDuration_s);
-        } else if (a == "--duration") {
-            options.localization_duration_s = io::parseNumber(value(), "option --duration (s)", 1, sim::kMaxDuration_s);
-        } else if (a == "--config") {
-            options.localization_config = value();
-            checkLocalizationConfig(options.localization_config);
-        } else if (a == "--no-kidnap") {
-            options.kidnap_run = false;
-        } else if (a == "--mapping-config") {
-            options.mapping_config = value();
-            checkMappingConfig(options.mapping_config);
-        } else {
-            throw std::invalid_argument("unknown option '" + a + "' (see --help)");
-        }
+    io::CommandLine c = commandLine();
+    if (!c.parse(args, out)) return false;
+    if (c.has("out")) options.out_dir = c.value("out");
+    if (auto v = c.integer("seed", 0, kMaxSeed)) options.seed = static_cast<std::uint64_t>(*v);
+    if (auto v = c.integer("rooms", 2, 2000)) options.rooms = static_cast<int>(*v);
+    if (auto v = c.integer("particles", 10, kMaxParticles)) options.particles = static_cast<int>(*v);
+    if (c.has("method")) {
+        options.method = c.value("method");
+        if (options.method != "simp" && options.method != "edt" && options.method != "d" && options.method != "o")
+            throw std::invalid_argument("option --method: '" + options.method + "' is not simp, edt, d or o");
+    }
+    if (auto v = c.integer("runs", 1, 10)) {
+        options.changes.clear();
+        for (int k = 0; k < static_cast<int>(*v); ++k) options.changes.push_back(0.15 * k);
+    }
+    if (auto v = c.number("mapping-duration", 1, sim::kMaxDuration_s)) options.mapping_duration_s = *v;
+    if (auto v = c.number("duration", 1, sim::kMaxDuration_s)) options.localization_duration_s = *v;
+    if (c.has("config")) {
+        options.localization_config = c.value("config");
+        checkLocalizationConfig(options.localization_config);
+    }
+    if (c.has("no-kidnap")) options.kidnap_run = false;
+    if (c.has("mapping-config")) {
+        options.mapping_config = c.value("mapping-config");
+        checkMappingConfig(options.mapping_config);
     }
     return true;
 }

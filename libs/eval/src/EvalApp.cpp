@@ -1,104 +1,80 @@
 #include <simp/eval/EvalApp.h>
-#include <simp/io/StrictNumber.h>
+#include <simp/io/CommandSet.h>
 
-#include <cmath>
-#include <set>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::eval {
-namespace {
 
-/// Options of each sub-command; true = takes a value.
-const std::map<std::string, std::map<std::string, bool>>& knownOptions() {
-    static const std::map<std::string, std::map<std::string, bool>> k{
-        {"traj",
-         {{"--gt", true}, {"--est", true}, {"--json", false}, {"--png", true}, {"--world", true}, {"--config", true},
-          {"--max-trans", true}, {"--max-rot", true}, {"--max-outside", true}, {"--fraction", true}}},
-        {"map",
-         {{"--gt", true}, {"--map", true}, {"--json", false}, {"--png", true}, {"--config", true},
-          {"--max-center-dist", true}, {"--classes", true}}},
-        {"plot-map", {{"--world", true}, {"--png", true}}},
-        {"changes",
-         {{"--truth", true}, {"--report", true}, {"--json", false}, {"--max-center-dist", true}, {"--classes", true},
-          {"--before-world", true}, {"--before-map", true}, {"--visited", true}}},
-        {"batch", {{"--config", true}, {"--out", true}, {"--cores", true}}},
-    };
-    return k;
+io::CommandSet EvalApp::commandSet() {
+    io::CommandSet set("simp-eval", "simp-eval: the paper's localization and map metrics, batch experiments and plots.");
+    set.add("traj", "success, convergence time, ATE after convergence (defaults: 0.3 m, pi/4 rad, 1.5 s, 0.95)")
+        .required("gt", "Q/groundtruth.tum", "ground truth (TUM)")
+        .required("est", "O/estimate.tum", "estimate (TUM)")
+        .flag("json", "print one JSON object on the last line of standard output")
+        .option("png", "F", "also draw the trajectories")
+        .option("world", "W", "the floor plan under the --png figure")
+        .option("config", "INI", "[metrics] max_trans_m, max_rot_rad, max_outside_s, convergence_fraction\n"
+                                 "(command-line options override)")
+        .option("max-trans", "M", "convergence gate, translation (m)")
+        .option("max-rot", "RAD", "convergence gate, rotation (rad)")
+        .option("max-outside", "S", "accumulated time outside the gates that counts as diverged (s)")
+        .option("fraction", "F", "converged within this fraction of the duration");
+    set.add("map", "per-class footprint IoU, precision, recall of the object map M against W (gate 1.0 m)")
+        .required("gt", "W", "ground-truth world directory")
+        .required("map", "M", "the built map (a world directory)")
+        .flag("json", "print one JSON object on the last line of standard output")
+        .option("png", "F", "also draw the evaluation")
+        .option("config", "INI", "[map_metrics] max_center_dist_m, classes (command-line options override)")
+        .option("max-center-dist", "M", "matching gate (m)")
+        .option("classes", "a,b,...", "evaluate only these classes");
+    set.add("changes", "precision and recall per kind of change: removed / moved matched by id_before, added by class\n"
+                       "and centre distance (gate 1.0 m)")
+        .required("truth", "Q/changes.json", "the true changes (simp-sim sequence)")
+        .required("report", "M/changes.json", "the detected changes (simp-map --update)")
+        .flag("json", "print one JSON object on the last line of standard output")
+        .option("max-center-dist", "M", "matching gate (m)")
+        .option("classes", "a,b,...", "evaluate only these classes")
+        .option("before-world", "W", "with --before-map: the report's ids are those of a built map M0, matched to\n"
+                                     "W's objects by class and centre distance")
+        .option("before-map", "M0", "the built map the report's ids refer to (with --before-world)")
+        .option("visited", "TUM", "Q/groundtruth.tum (with --before-world): only changes in the rooms of W the\n"
+                                  "trajectory entered");
+    set.add("plot-map", "the object map of W over its floor plan, boxes coloured by class")
+        .required("world", "W", "world directory")
+        .required("png", "F", "the figure to write");
+    set.add("batch", "runs simp-localize for sequences x localization configs x methods x seeds (resumable),\n"
+                     "evaluates the built maps of [batch] maps (Table I); writes DIR/tables.md, DIR/runs.csv,\n"
+                     "DIR/summary.csv, DIR/maps.csv, DIR/success.png, DIR/error_over_time.png")
+        .required("config", "config_ini/batch.ini", "the experiment")
+        .required("out", "DIR", "output directory")
+        .option("cores", "N", "parallel runs, in [1, 256]");
+    set.notes("--json prints one JSON object on the last line of standard output.\nDefinitions: doc/evaluation.md.");
+    return set;
 }
 
-}  // namespace
-
-std::string EvalApp::usage() {
-    return "simp-eval: the paper's localization and map metrics, batch experiments and plots.\n"
-           "\n"
-           "Usage:\n"
-           "  simp-eval traj --gt Q/groundtruth.tum --est O/estimate.tum [--json] [--png F [--world W]]\n"
-           "                 [--config INI] [--max-trans M] [--max-rot RAD] [--max-outside S] [--fraction F]\n"
-           "      success, convergence time, ATE after convergence (defaults: 0.3 m, pi/4 rad, 1.5 s, 0.95)\n"
-           "  simp-eval map --gt W --map M [--json] [--png F] [--config INI] [--max-center-dist M]\n"
-           "                [--classes a,b,...]   (evaluate only these classes)\n"
-           "      per-class footprint IoU, precision, recall of the object map M against W (gate 1.0 m)\n"
-           "  simp-eval changes --truth Q/changes.json --report M/changes.json [--json] [--max-center-dist M]\n"
-           "                    [--classes a,b,...] [--before-world W --before-map M0] [--visited TUM]\n"
-           "      precision and recall per kind of change: removed / moved matched by id_before, added by class\n"
-           "      and centre distance (gate 1.0 m); --before-world/--before-map: the report's ids are those of a\n"
-           "      built map M0, matched to W's objects by class and centre distance; --visited Q/groundtruth.tum\n"
-           "      (with --before-world): only changes in the rooms of W the trajectory entered\n"
-           "  simp-eval plot-map --world W --png F\n"
-           "      the object map of W over its floor plan, boxes coloured by class\n"
-           "  simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]\n"
-           "      runs simp-localize for sequences x localization configs x methods x seeds (resumable),\n"
-           "      evaluates the built maps of [batch] maps (Table I); writes DIR/tables.md, DIR/runs.csv,\n"
-           "      DIR/summary.csv, DIR/maps.csv, DIR/success.png, DIR/error_over_time.png\n"
-           "\n"
-           "--json prints one JSON object on the last line of standard output.\n"
-           "--config INI: [metrics] max_trans_m, max_rot_rad, max_outside_s, convergence_fraction;\n"
-           "              [map_metrics] max_center_dist_m, classes (command-line options override).\n"
-           "Definitions: doc/evaluation.md.\n";
-}
+std::string EvalApp::usage() { return commandSet().help(); }
 
 void EvalApp::initialize(int argc, const char* const* argv) {
     command_.clear();
-    options_.clear();
     help_ = false;
-    if (argc < 2) throw std::invalid_argument("missing sub-command (traj, map, changes, plot-map, batch); see --help");
+    io::CommandSet set = commandSet();
+    std::ostringstream help;
+    const io::CommandLine* c = set.parse(argc, argv, help);
+    help_ = c == nullptr;
+    if (help_) return;
     command_ = argv[1];
-    if (command_ == "--help" || command_ == "-h" || command_ == "help") {
-        help_ = true;
-        return;
-    }
-    const auto known = knownOptions().find(command_);
-    if (known == knownOptions().end())
-        throw std::invalid_argument("unknown sub-command '" + command_ + "' (traj, map, changes, plot-map, batch); see --help");
-    for (int i = 2; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            help_ = true;
-            continue;
-        }
-        const auto opt = known->second.find(a);
-        if (opt == known->second.end())
-            throw std::invalid_argument("simp-eval " + command_ + ": unknown option '" + a + "'; see --help");
-        if (!opt->second) {
-            options_[a] = "";
-            continue;
-        }
-        if (i + 1 >= argc) throw std::invalid_argument("simp-eval " + command_ + ": option " + a + " needs a value");
-        options_[a] = argv[++i];
-    }
+    args_ = *c;
 }
 
-const std::string& EvalApp::required(const std::string& key) const {
-    const auto it = options_.find(key);
-    if (it == options_.end() || it->second.empty())
-        throw std::invalid_argument("simp-eval " + command_ + ": missing required option " + key + "; see --help");
-    return it->second;
-}
+const std::string& EvalApp::required(const std::string& key) const { return args_.value(key.substr(2)); }
+
+bool EvalApp::has(const std::string& key) const { return args_.has(key.substr(2)); }
+
+const std::string& EvalApp::value(const std::string& key) const { return args_.value(key.substr(2)); }
 
 double EvalApp::number(const std::string& key, double fallback, double lo, double hi) const {
-    const auto it = options_.find(key);
-    if (it == options_.end()) return fallback;
-    return io::parseNumber(it->second, "simp-eval " + command_ + ": option " + key, lo, hi);
+    return args_.number(key.substr(2), lo, hi).value_or(fallback);
 }
 
 int EvalApp::run(std::ostream& out, std::ostream& err) {

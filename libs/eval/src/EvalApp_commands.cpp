@@ -1,6 +1,5 @@
 /// The sub-commands of EvalApp (EvalApp.cpp holds the command-line parsing).
 #include <simp/io/StrictIni.h>
-#include <simp/io/StrictNumber.h>
 #include <simp/eval/BatchConfig.h>
 #include <simp/eval/BatchFigures.h>
 #include <simp/eval/BatchMaps.h>
@@ -65,7 +64,7 @@ int EvalApp::runTraj(std::ostream& out) {
     requireFile(est_path, "estimated trajectory");
     TrajMetricsParams p;
     if (has("--config")) {
-        const io::StrictIni ini(options_.at("--config"));
+        const io::StrictIni ini(value("--config"));
         ini.loadChecked([&](const io::StrictIni& c) { loadTrajMetrics(c, p); }, {"batch", "map_metrics"});
     }
     p.max_trans_m = number("--max-trans", p.max_trans_m, 1e-6, 1e3);
@@ -84,10 +83,10 @@ int EvalApp::runTraj(std::ostream& out) {
         world::World w;
         const bool with_world = has("--world");
         if (with_world) {
-            requireDir(options_.at("--world"), "world");
-            w = world::loadWorld(options_.at("--world"));
+            requireDir(value("--world"), "world");
+            w = world::loadWorld(value("--world"));
         }
-        writeFigure(options_.at("--png"),
+        writeFigure(value("--png"),
                     drawTrajectoryFigure(files.ground_truth, files.estimate, m, p, with_world ? &w : nullptr), out);
     }
     if (has("--json")) out << toJson(m).dump() << "\n";
@@ -100,14 +99,14 @@ int EvalApp::runMap(std::ostream& out) {
     requireDir(map_dir, "map world");
     MapMatchParams p;
     if (has("--config")) {
-        const io::StrictIni ini(options_.at("--config"));
+        const io::StrictIni ini(value("--config"));
         ini.loadChecked([&](const io::StrictIni& c) { loadMapMetricsParams(c, p); }, {"batch", "metrics"});
     }
     p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m, 1e-6, 100);
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("simp-eval map: --max-center-dist must be > 0");
     if (has("--classes")) {
         p.classes.clear();  // the command line wins over [map_metrics] classes
-        std::stringstream list(options_.at("--classes"));
+        std::stringstream list(value("--classes"));
         for (std::string name; std::getline(list, name, ',');)
             if (!name.empty()) p.classes.push_back(name);
         if (p.classes.empty()) throw std::invalid_argument("simp-eval map: --classes needs at least one class name");
@@ -124,7 +123,7 @@ int EvalApp::runMap(std::ostream& out) {
         << " m)\n\n"
         << mapMarkdownTable(m) << "\n";
     if (has("--png")) {
-        writeFigure(options_.at("--png"), drawMapEvaluation(gt, map, m), out);
+        writeFigure(value("--png"), drawMapEvaluation(gt, map, m), out);
     }
     if (has("--json")) out << toJson(m).dump() << "\n";
     return 0;
@@ -137,7 +136,7 @@ int EvalApp::runChanges(std::ostream& out) {
     ChangeMatchParams p;
     p.max_center_dist_m = number("--max-center-dist", p.max_center_dist_m, 1e-6, 100);
     if (has("--classes")) {
-        std::stringstream list(options_.at("--classes"));
+        std::stringstream list(value("--classes"));
         for (std::string name; std::getline(list, name, ',');)
             if (!name.empty()) p.classes.push_back(name);
         if (p.classes.empty()) throw std::invalid_argument("simp-eval changes: --classes needs at least one class name");
@@ -149,28 +148,28 @@ int EvalApp::runChanges(std::ostream& out) {
     world::World w, m0;
     BeforeMaps before;
     if (has("--before-world")) {
-        requireDir(options_.at("--before-world"), "before world");
-        requireDir(options_.at("--before-map"), "before map");
-        w = world::loadWorld(options_.at("--before-world"));
-        m0 = world::loadWorld(options_.at("--before-map"));
+        requireDir(value("--before-world"), "before world");
+        requireDir(value("--before-map"), "before map");
+        w = world::loadWorld(value("--before-world"));
+        m0 = world::loadWorld(value("--before-map"));
         before.world = &w.objects;
         before.map = &m0.objects;
     }
     if (has("--visited")) {
         if (!before.world) throw std::invalid_argument("simp-eval changes: --visited needs --before-world (its rooms.png)");
-        requireFile(options_.at("--visited"), "visited trajectory");
+        requireFile(value("--visited"), "visited trajectory");
         if (w.rooms.empty())
-            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + options_.at("--before-world") +
+            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + value("--before-world") +
                                         "' has no rooms.png");
         p.rooms = &w.rooms;
-        p.visited_rooms = visitedRooms(w.rooms, options_.at("--visited"));
+        p.visited_rooms = visitedRooms(w.rooms, value("--visited"));
     }
     const ChangeScores s = scoreChanges(truth, report, p, before);
     out << "change evaluation: " << report_path << " against " << truth_path << " (added: centre gate "
         << fmt(p.max_center_dist_m, 2) << " m)\n\n"
         << changeMarkdownTable(s);
     if (before.world)
-        out << "\nbefore map '" << options_.at("--before-map") << "': " << s.truth_not_in_map
+        out << "\nbefore map '" << value("--before-map") << "': " << s.truth_not_in_map
             << " true removals of objects it never had (dropped), " << s.ignored_reports
             << " reports about its ghosts or objects it had missed (ignored)\n";
     if (p.rooms) out << "scored: changes in the " << p.visited_rooms.size() << " rooms the trajectory entered\n";
@@ -189,7 +188,7 @@ int EvalApp::runBatch(std::ostream& out, std::ostream& err) {
     const std::string ini = required("--config"), out_dir = required("--out");
     BatchConfig cfg = loadBatchConfig(ini);
     if (has("--cores")) {
-        cfg.cores = static_cast<int>(io::parseInteger(options_.at("--cores"), "simp-eval batch: option --cores", 1, 256));
+        cfg.cores = static_cast<int>(*args_.integer("cores", 1, 256));
     }
     fs::create_directories(out_dir);
     err << "batch configuration (" << ini << "):\n" << cfg.dump();

@@ -1,7 +1,6 @@
 /// \file LabelsApp.cpp
 #include <simp/io/StrictIni.h>
-#include <simp/io/StrictNumber.h>
-#include <simp/io/ToolArgs.h>
+#include <simp/io/CommandLine.h>
 #include <simp/labels/LabelsApp.h>
 #include <simp/world/World.h>
 
@@ -12,31 +11,37 @@ namespace simp::labels {
 
 namespace fs = std::filesystem;
 
-std::string LabelsApp::usage() {
-    return "Usage: simp-labels --world W --frames FRAMES.json --detections2d DET.csv|DET.json --out labels.json\n"
-           "                   [--config INI] [--iou T] [--poses poses.tum --rig rig.ini|json]\n"
-           "Projects the world's boxes into each posed image (Eq. reprojection), computes truncation and\n"
-           "visibility (boxes z-buffer + floor-plan walls), matches 2D detections by class and 2D IoU and\n"
-           "writes Omni3D JSON for Cube R-CNN (doc/labels.md). --world: a world directory (walls used) or an\n"
-           "objects.json file (no walls). --poses/--rig: images of FRAMES.json given by \"camera\" and\n"
-           "\"timestamp\" get their pose and K from the robot poses and the camera rig.\n";
+io::CommandLine LabelsApp::commandLine() {
+    io::CommandLine c("simp-labels",
+                      "Projects the world's boxes into each posed image (Eq. reprojection), computes truncation and\n"
+                      "visibility (boxes z-buffer + floor-plan walls), matches 2D detections by class and 2D IoU and\n"
+                      "writes Omni3D JSON for Cube R-CNN (doc/labels.md).");
+    c.required("world", "W", "a world directory (walls used) or an objects.json file (no walls)")
+        .required("frames", "FRAMES.json", "the posed images")
+        .required("detections2d", "DET.csv|DET.json", "2D detections")
+        .required("out", "labels.json", "the Omni3D labels to write")
+        .option("config", "INI", ".ini with a [simp-labels] section")
+        .option("iou", "T", "2D IoU threshold in [0, 1], overrides [simp-labels] iou_threshold")
+        .option("poses", "poses.tum", "robot poses: images of FRAMES.json given by \"camera\" and \"timestamp\" get\n"
+                                      "their pose and K from the robot poses and the camera rig (with --rig)")
+        .option("rig", "rig.ini|rig.json", "the camera rig (with --poses)");
+    return c;
 }
 
+std::string LabelsApp::usage() { return commandLine().help(); }
+
 bool LabelsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
-    const io::ToolArgs a = io::parseToolArgs(argc, argv, {"world", "frames", "detections2d", "out"}, {"config", "iou", "poses", "rig"});
-    if (a.help) {
-        out << usage();
-        return false;
-    }
-    world_path = a.get("world"), frames_path = a.get("frames"), detections_path = a.get("detections2d");
-    out_path = a.get("out");
+    io::CommandLine a = commandLine();
+    if (!a.parse(argc, argv, out)) return false;
+    world_path = a.value("world"), frames_path = a.value("frames"), detections_path = a.value("detections2d");
+    out_path = a.value("out");
     if (a.has("poses") != a.has("rig")) throw std::invalid_argument("--poses and --rig go together");
-    if (a.has("poses")) poses_path = a.get("poses"), rig_path = a.get("rig");
+    if (a.has("poses")) poses_path = a.value("poses"), rig_path = a.value("rig");
     if (a.has("config")) {
-        config_path = a.get("config");
+        config_path = a.value("config");
         io::StrictIni(config_path).loadChecked([&](const io::StrictIni& ini) { options.loadFromConfigFile(ini, "simp-labels"); });
     }
-    if (a.has("iou")) options.iou_threshold = io::parseNumber(a.get("iou"), "--iou", 0, 1);
+    if (const auto iou = a.number("iou", 0, 1)) options.iou_threshold = *iou;
     options.validate();
     return true;
 }

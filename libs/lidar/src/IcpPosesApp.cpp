@@ -2,6 +2,7 @@
 #include <simp/lidar/IcpPosesApp.h>
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/StrictIni.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/localization/RawlogSequence.h>
@@ -39,45 +40,26 @@ mrpt::math::TPose2D parsePose2D(const std::string& text, const std::string& what
     return {v[0], v[1], v[2]};
 }
 
-std::string IcpPosesApp::usage() {
-    return "simp-icp-poses: scan-matched poses from odometry and 2D LiDAR scans (MRPT's ICP against the floor plan)\n"
-           "\n"
-           "  simp-icp-poses --world W --rawlog Q/sequence.rawlog --initial-pose x,y,phi --out P.tum\n"
-           "                 [--gt Q/groundtruth.tum] [--config INI]\n"
-           "\n"
-           "  --world W          world directory: its floor plan is the map the scans are aligned to\n"
-           "  --rawlog R         rawlog with odometry and CObservation2DRangeScan (simp-sim sequence --lidar)\n"
-           "  --initial-pose P   the known start x,y,phi (m, m, rad) in the floor plan's frame\n"
-           "  --out P.tum        the poses of every frame (TUM), e.g. for simp-map --poses P.tum\n"
-           "  --gt G.tum         also print the ATE against this ground truth (as simp-eval traj)\n"
-           "  --config INI       [ICP] knobs (config_ini/icp-poses.ini; doc/lidar.md)\n";
+io::CommandLine IcpPosesApp::commandLine() {
+    io::CommandLine c("simp-icp-poses",
+                      "Scan-matched poses from odometry and 2D LiDAR scans (MRPT's ICP against the floor plan).");
+    c.required("world", "W", "world directory: its floor plan is the map the scans are aligned to")
+        .required("rawlog", "Q/sequence.rawlog", "rawlog with odometry and CObservation2DRangeScan (simp-sim sequence --lidar)")
+        .required("initial-pose", "x,y,phi", "the known start x,y,phi (m, m, rad) in the floor plan's frame")
+        .required("out", "P.tum", "the poses of every frame (TUM), e.g. for simp-map --poses P.tum")
+        .option("gt", "G.tum", "also print the ATE against this ground truth (as simp-eval traj)")
+        .option("config", "INI", "[ICP] knobs (config_ini/icp-poses.ini; doc/lidar.md)");
+    return c;
 }
 
+std::string IcpPosesApp::usage() { return commandLine().help(); }
+
 bool IcpPosesApp::initialize(const std::vector<std::string>& args, std::ostream& out) {
-    for (const auto& a : args)
-        if (a == "--help" || a == "-h") {
-            out << usage();
-            return false;
-        }
-    bool have_pose = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& opt = args[i];
-        if (i + 1 >= args.size()) throw std::invalid_argument("option " + opt + " needs a value; see --help");
-        const std::string& v = args[++i];
-        if (opt == "--world") world_dir = v;
-        else if (opt == "--rawlog") rawlog_path = v;
-        else if (opt == "--out") out_path = v;
-        else if (opt == "--gt") gt_path = v;
-        else if (opt == "--config") config_path = v;
-        else if (opt == "--initial-pose") {
-            initial_pose = parsePose2D(v, "option --initial-pose");
-            have_pose = true;
-        } else throw std::invalid_argument("unknown option '" + opt + "'; see --help");
-    }
-    for (const auto& [name, value] : {std::pair<std::string, std::string>{"--world", world_dir}, {"--rawlog", rawlog_path},
-                                      {"--out", out_path}})
-        if (value.empty()) throw std::invalid_argument("option " + name + " is required; see --help");
-    if (!have_pose) throw std::invalid_argument("option --initial-pose is required (the known start x,y,phi)");
+    io::CommandLine c = commandLine();
+    if (!c.parse(args, out)) return false;
+    world_dir = c.value("world"), rawlog_path = c.value("rawlog"), out_path = c.value("out");
+    gt_path = c.value("gt"), config_path = c.value("config");
+    initial_pose = parsePose2D(c.value("initial-pose"), "option --initial-pose");
     if (!gt_path.empty() && !std::filesystem::is_regular_file(gt_path))
         throw std::invalid_argument("option --gt: '" + gt_path + "' does not exist");
     return true;

@@ -1,6 +1,5 @@
 #include <simp/localization/LocalizeApp.h>
 
-#include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/io/vector_loadsave.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/maps/TMetricMapInitializer.h>
@@ -10,6 +9,7 @@
 #include <simp/eval/Scene3D.h>
 #include <simp/localization/RawlogSequence.h>
 #include <simp/localization/ScanLikelihood.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/world/World.h>
@@ -45,15 +45,6 @@ void writeParticles(const std::string& path, const mrpt::slam::CMonteCarloLocali
     }
     if (!f) throw std::runtime_error("error while writing '" + path + "'");
 }
-
-/// TCLAP output that prints --help to stdout but keeps a parse error for the exception.
-class RecordingOutput : public TCLAP::StdOutput {
-   public:
-    void failure(TCLAP::CmdLineInterface& /*c*/, TCLAP::ArgException& e) override {
-        error = e.error() + (e.argId().empty() ? "" : " (" + e.argId() + ")");
-    }
-    std::string error;
-};
 
 }  // namespace
 
@@ -102,77 +93,53 @@ void LocalizeApp::initialize(const std::vector<std::string>& args) {
     initialize(static_cast<int>(argv.size()), argv.data());
 }
 
-void LocalizeApp::initialize(int argc, const char* const* argv) {
-    TCLAP::CmdLine cmd(
-        "simp-localize: global localization with 3D object detections on a floor plan (MCL, MRPT). "
-        "Writes OUT/estimate.tum, OUT/steps.csv, OUT/final_particles.txt, OUT/trajectory.png. "
-        "See doc/localization.md.",
-        ' ', "0.1");
-    TCLAP::ValueArg<std::string> a_world("", "world", "world directory (floorplan.yaml, objects.json); required", false, "", "W", cmd);
-    TCLAP::ValueArg<std::string> a_rawlog("", "rawlog", "input rawlog (Q/sequence.rawlog); required", false, "", "RAWLOG", cmd);
-    TCLAP::ValueArg<std::string> a_out("", "out", "output directory; required", false, "", "O", cmd);
-    TCLAP::ValueArg<std::string> a_config("", "config", "MRPT-style .ini (config_ini/simp.ini)", false, "", "INI", cmd);
-    TCLAP::ValueArg<std::string> a_method("", "method", "sensor model: simp|edt|d|o|lidar|simp+lidar (overrides the .ini; lidar: the scans against the floor plan "
-                                          "alone, simp+lidar: times the object model; doc/lidar.md)", false, "",
-                                          "M", cmd);
-    TCLAP::ValueArg<long long> a_particles("", "particles", "particle count (overrides the .ini; default 5000)", false,
-                                           0, "N", cmd);
-    TCLAP::ValueArg<long long> a_seed("", "seed", "random seed (overrides the .ini; default 0)", false, 0, "S", cmd);
-    TCLAP::ValueArg<std::string> a_initial(
-        "", "initial-pose",
-        "x,y,phi[,sigma_xy,sigma_phi] (m, rad): track from this pose (default spread 0.2 m, 0.1 rad) instead of "
-        "localizing globally",
-        false, "", "POSE", cmd);
-    TCLAP::ValueArg<std::string> a_gt("", "gt", "ground truth (TUM, Q/groundtruth.tum): drawn in trajectory.png and the "
-                                      "3D scene", false, "", "TUM", cmd);
-    TCLAP::ValueArg<std::string> a_scene("", "3dscene",
-                                         "also write an MRPT .3Dscene (SceneViewer3D): floor plan, objects, "
-                                         "trajectories, final particles",
-                                         false, "", "F", cmd);
-    TCLAP::SwitchArg a_quiet("", "quiet", "no progress or log output on stderr", cmd, false);
-    RecordingOutput recorder;
-    delete cmd.getOutput();  // TCLAP does not free its default output once another is set
-    cmd.setOutput(&recorder);
+io::CommandLine LocalizeApp::commandLine() {
+    io::CommandLine c("simp-localize",
+                      "Global localization with 3D object detections on a floor plan (MCL, MRPT). Writes OUT/estimate.tum,\n"
+                      "OUT/steps.csv, OUT/final_particles.txt, OUT/trajectory.png. See doc/localization.md.");
+    c.required("world", "W", "world directory (floorplan.yaml, objects.json)")
+        .required("rawlog", "RAWLOG", "input rawlog (Q/sequence.rawlog)")
+        .required("out", "O", "output directory")
+        .option("config", "INI", "MRPT-style .ini (config_ini/simp.ini)")
+        .option("method", "M", "sensor model: simp|edt|d|o|lidar|simp+lidar (overrides the .ini; lidar: the scans against\n"
+                               "the floor plan alone, simp+lidar: times the object model; doc/lidar.md)")
+        .option("particles", "N", "particle count, in [1, " + std::to_string(kMaxParticles) + "] (overrides the .ini; default 5000)")
+        .option("seed", "S", "random seed, in [0, 2^32) (overrides the .ini; default 0)")
+        .option("initial-pose", "POSE", "x,y,phi[,sigma_xy,sigma_phi] (m, rad): track from this pose (default spread 0.2 m,\n"
+                                        "0.1 rad) instead of localizing globally")
+        .option("gt", "TUM", "ground truth (TUM, Q/groundtruth.tum): drawn in trajectory.png and the 3D scene")
+        .option("3dscene", "F", "also write an MRPT .3Dscene (SceneViewer3D): floor plan, objects, trajectories, final particles")
+        .flag("quiet", "no progress or log output on stderr")
+        .version("0.1");
+    return c;
+}
 
-    std::vector<const char*> args;
-    for (int i = 0; i < argc; ++i) args.push_back(argv[i]);
-    if (args.empty()) args.push_back("simp-localize");
-    if (!cmd.parse(static_cast<int>(args.size()), args.data())) {
-        if (!recorder.error.empty()) throw std::invalid_argument("simp-localize: " + recorder.error + "; see --help");
+void LocalizeApp::initialize(int argc, const char* const* argv) {
+    io::CommandLine a = commandLine();
+    if (!a.parse(argc, argv, std::cout)) {
         help_requested = true;  // --help / --version printed the text
         return;
     }
-    for (const auto* a : {&a_world, &a_rawlog, &a_out})
-        if (!a->isSet()) throw std::invalid_argument("simp-localize: missing required option --" + a->getName() + "; see --help");
-    world_dir = a_world.getValue();
-    rawlog_path = a_rawlog.getValue();
-    out_dir = a_out.getValue();
-    config_path = a_config.getValue();
-    show_progress = !a_quiet.getValue();
-    gt_path = a_gt.getValue();
-    scene_path = a_scene.getValue();
+    world_dir = a.value("world");
+    rawlog_path = a.value("rawlog");
+    out_dir = a.value("out");
+    config_path = a.value("config");
+    show_progress = !a.has("quiet");
+    gt_path = a.value("gt");
+    scene_path = a.value("3dscene");
     if (!gt_path.empty() && !fs::is_regular_file(gt_path))
         throw std::invalid_argument("simp-localize: --gt '" + gt_path + "' does not exist");
 
     loadConfig();
-    if (a_method.isSet()) {
-        const std::string m = a_method.getValue();
+    if (a.has("method")) {
+        const std::string m = a.value("method");
         if (std::find(sensorModelNames().begin(), sensorModelNames().end(), m) == sensorModelNames().end())
             throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use simp, edt, d, o, lidar or simp+lidar)");
         options.experiment.sensor_model = m;
     }
-    if (a_particles.isSet()) {
-        if (a_particles.getValue() <= 0 || a_particles.getValue() > kMaxParticles)
-            throw std::invalid_argument("simp-localize: --particles must be in [1, " + std::to_string(kMaxParticles) +
-                                        "]");
-        options.experiment.particles_count = static_cast<std::size_t>(a_particles.getValue());
-    }
-    if (a_seed.isSet()) {
-        if (a_seed.getValue() < 0 || a_seed.getValue() > 4294967295LL)
-            throw std::invalid_argument("simp-localize: --seed must be in [0, 2^32)");
-        options.experiment.seed = static_cast<std::uint32_t>(a_seed.getValue());
-    }
-    if (a_initial.isSet()) initial_pose = parseInitialPose(a_initial.getValue());
+    if (const auto n = a.integer("particles", 1, kMaxParticles)) options.experiment.particles_count = static_cast<std::size_t>(*n);
+    if (const auto seed = a.integer("seed", 0, 4294967295LL)) options.experiment.seed = static_cast<std::uint32_t>(*seed);
+    if (a.has("initial-pose")) initial_pose = parseInitialPose(a.value("initial-pose"));
 }
 
 void LocalizeApp::loadConfig() {

@@ -1,4 +1,4 @@
-#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/StrictIni.h>
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
@@ -19,46 +19,33 @@ namespace fs = std::filesystem;
 
 MapApp::MapApp() : log(&std::cout) {}
 
+io::CommandLine MapApp::commandLine() {
+    io::CommandLine c("simp-map", "Builds a 3D object map over the floor plan of a world from posed detections (doc/mapping.md).");
+    c.required("world", "W", "world directory W (its floor plan and rooms are used, not its objects)")
+        .required("rawlog", "FILE", "rawlog of CObservationObjects3D (Q/sequence.rawlog)")
+        .required("poses", "FILE", "robot poses, TUM file (Q/groundtruth.tum)")
+        .required("out", "M", "output world directory M")
+        .option("config", "INI", ".ini with a [mapping] section (config_ini/mapping.ini)")
+        .flag("odometry-only", "use the rawlog's integrated odometry (from the first TUM pose) instead of the TUM poses")
+        .option("3dscene", "F", "also write an MRPT .3Dscene (SceneViewer3D): floor plan, built objects, poses")
+        .option("update", "M0", "update the map M0 of an earlier session: writes the updated map, M/changes.json and\n"
+                                "M/changes.png (doc/mapping.md)")
+        .version("1.0");
+    return c;
+}
+
 bool MapApp::initialize(int argc, const char* const* argv) {
-    TCLAP::CmdLine cmd("simp-map: builds a 3D object map over the floor plan of a world from posed detections "
-                       "(doc/mapping.md)", ' ', "1.0");
-    TCLAP::ValueArg<std::string> world("", "world", "world directory W (its floor plan and rooms are used, not its objects)",
-                                       true, "", "W", cmd);
-    TCLAP::ValueArg<std::string> rawlog("", "rawlog", "rawlog of CObservationObjects3D (Q/sequence.rawlog)", true, "",
-                                        "FILE", cmd);
-    TCLAP::ValueArg<std::string> poses("", "poses", "robot poses, TUM file (Q/groundtruth.tum)", true, "", "FILE", cmd);
-    TCLAP::ValueArg<std::string> out("", "out", "output world directory M", true, "", "M", cmd);
-    TCLAP::ValueArg<std::string> config("", "config", ".ini with a [mapping] section (config_ini/mapping.ini)", false, "",
-                                        "INI", cmd);
-    TCLAP::SwitchArg odom("", "odometry-only",
-                          "use the rawlog's integrated odometry (from the first TUM pose) instead of the TUM poses", cmd);
-    TCLAP::ValueArg<std::string> scene("", "3dscene",
-                                       "also write an MRPT .3Dscene (SceneViewer3D): floor plan, built objects, poses",
-                                       false, "", "F", cmd);
-    TCLAP::ValueArg<std::string> update("", "update",
-                                        "update the map M0 of an earlier session: writes the updated map, "
-                                        "M/changes.json and M/changes.png (doc/mapping.md)",
-                                        false, "", "M0", cmd);
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h" || a == "--version") {
-            std::vector<const char*> v(argv, argv + argc);
-            cmd.parse(argc, v.data());  // prints usage / version
-            return false;
-        }
-    }
-    std::vector<const char*> v(argv, argv + argc);
-    if (!cmd.parse(argc, v.data()))
-        throw std::invalid_argument("bad command line (the parser's message is above); see --help");
+    io::CommandLine c = commandLine();
+    if (!c.parse(argc, argv, std::cout)) return false;  // --help / --version printed
     MapAppArgs a;
-    a.world_dir = world.getValue();
-    a.rawlog_path = rawlog.getValue();
-    a.poses_path = poses.getValue();
-    a.out_dir = out.getValue();
-    a.config_path = config.getValue();
-    a.odometry_only = odom.getValue();
-    a.scene_path = scene.getValue();
-    a.update_dir = update.getValue();
+    a.world_dir = c.value("world");
+    a.rawlog_path = c.value("rawlog");
+    a.poses_path = c.value("poses");
+    a.out_dir = c.value("out");
+    a.config_path = c.value("config");
+    a.odometry_only = c.has("odometry-only");
+    a.scene_path = c.value("3dscene");
+    a.update_dir = c.value("update");
     initialize(a);
     return true;
 }

@@ -1,5 +1,5 @@
 #include <simp/io/StrictIni.h>
-#include <simp/io/StrictNumber.h>
+#include <simp/io/CommandSet.h>
 #include <mrpt/system/filesystem.h>
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
@@ -21,80 +21,59 @@ constexpr std::int64_t kMaxSeed = std::numeric_limits<std::int64_t>::max();
 
 }  // namespace
 
-std::string SimApp::usage() {
-    return "simp-sim: the SIMP simulator (built-in office world, sequences with odometry and 3D object detections)\n"
-           "\n"
-           "  simp-sim world --builtin office --seed S --out W [--size-m2 A | --rooms N] [--config INI]\n"
-           "      writes the world directory W (floorplan.yaml/.png, rooms.png, objects.json)\n"
-           "  simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage]\n"
-           "                    [--kidnap-at SEC] [--lidar]\n"
-           "      writes Q/sequence.rawlog, Q/groundtruth.tum, Q/groundtruth_mrpt.txt (for pf-localization),\n"
-           "      Q/world/, Q/changes.json and Q/overview.png\n"
-           "      (+ Q/kidnap.json with --kidnap-at; --world-in W is a synonym of --world)\n"
-           "\n"
-           "  --seed S       every random choice derives from S (same S -> byte-identical files)\n"
-           "  --config INI   MRPT .ini with the simulator's knobs (config_ini/sim.ini documents all)\n"
-           "  --duration SEC simulated time (s), overrides [sequence] duration_s\n"
-           "  --changes F    fraction in [0, 1] of objects removed/moved/added and of doors closed\n"
-           "                 (every change is listed in Q/changes.json)\n"
-           "  --coverage     visit the rooms nearest-first with a full turn in each (a mapping run);\n"
-           "                 same as [trajectory] visit_order = coverage\n"
-           "  --kidnap-at SEC  at SEC s after the start (0 <= SEC <= duration) teleport the robot once to a random\n"
-           "                 free pose >= [sequence] kidnap_min_distance_m (3 m) away; odometry does not show it,\n"
-           "                 Q/groundtruth.tum does; Q/kidnap.json records it. Overrides [sequence] kidnap_at_s\n"
-           "  --lidar        also write 2D laser scans (CObservation2DRangeScan, sensorLabel LIDAR) into the\n"
-           "                 sensory frames; same as [lidar] enabled = true (doc/lidar.md)\n"
-           "  --size-m2 A    target floor area (m^2) of the built-in office; --rooms N: number of rooms\n";
+io::CommandSet SimApp::commandSet() {
+    io::CommandSet set("simp-sim", "simp-sim: the SIMP simulator (built-in office world, sequences with odometry and 3D object detections)");
+    set.add("world", "writes the world directory W (floorplan.yaml/.png, rooms.png, objects.json)")
+        .option("builtin", "office", "the built-in world (only 'office', the default)")
+        .required("seed", "S", "every random choice derives from S (same S -> byte-identical files)")
+        .required("out", "W", "the world directory to write")
+        .option("size-m2", "A", "target floor area (m^2) of the built-in office (excludes --rooms)")
+        .option("rooms", "N", "number of rooms of the built-in office, in [1, 2000] (excludes --size-m2)")
+        .option("config", "INI", "MRPT .ini with the simulator's knobs (config_ini/sim.ini documents all)");
+    set.add("sequence", "writes Q/sequence.rawlog, Q/groundtruth.tum, Q/groundtruth_mrpt.txt (for pf-localization),\n"
+                        "Q/world/, Q/changes.json and Q/overview.png (+ Q/kidnap.json with --kidnap-at)")
+        .required("world", "W", "the world directory to simulate in")
+        .alias("world-in")
+        .required("seed", "S", "every random choice derives from S (same S -> byte-identical files)")
+        .required("out", "Q", "the sequence directory to write")
+        .option("config", "INI", "MRPT .ini with the simulator's knobs (config_ini/sim.ini documents all)")
+        .option("duration", "SEC", "simulated time (s), overrides [sequence] duration_s")
+        .option("changes", "F", "fraction in [0, 1] of objects removed/moved/added and of doors closed\n"
+                                 "(every change is listed in Q/changes.json)")
+        .flag("coverage", "visit the rooms nearest-first with a full turn in each (a mapping run);\n"
+                          "same as [trajectory] visit_order = coverage")
+        .option("kidnap-at", "SEC", "at SEC s after the start (0 <= SEC <= duration) teleport the robot once to a random\n"
+                                    "free pose >= [sequence] kidnap_min_distance_m (3 m) away; odometry does not show it,\n"
+                                    "Q/groundtruth.tum does; Q/kidnap.json records it. Overrides [sequence] kidnap_at_s")
+        .flag("lidar", "also write 2D laser scans (CObservation2DRangeScan, sensorLabel LIDAR) into the\n"
+                       "sensory frames; same as [lidar] enabled = true (doc/lidar.md)");
+    return set;
 }
 
+std::string SimApp::usage() { return commandSet().help(); }
+
 bool SimApp::initialize(const std::vector<std::string>& args, std::ostream& out) {
-    if (args.empty()) throw std::invalid_argument("missing command ('world' or 'sequence'); see --help");
-    for (const auto& a : args)
-        if (a == "--help" || a == "-h") {
-            out << usage();
-            return false;
-        }
-    command = args[0];
-    if (command != "world" && command != "sequence")
-        throw std::invalid_argument("unknown command '" + command + "' (expected 'world' or 'sequence')");
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& opt = args[i];
-        if (command == "sequence" && opt == "--coverage") {
-            coverage = true;
-            continue;
-        }
-        if (command == "sequence" && opt == "--lidar") {
-            lidar = true;
-            continue;
-        }
-        if (i + 1 >= args.size()) throw std::invalid_argument("option " + opt + " needs a value");
-        const std::string& v = args[++i];
-        if (opt == "--seed") {
-            seed = static_cast<std::uint64_t>(io::parseInteger(v, "option --seed", 0, kMaxSeed));
-            seed_given = true;
-        } else if (opt == "--out") out_dir = v;
-        else if (opt == "--config") config_path = v;
-        else if (command == "world" && opt == "--builtin") builtin = v;
-        else if (command == "world" && opt == "--size-m2") size_m2 = io::parseNumber(v, "option --size-m2", 1, 1e6);
-        else if (command == "world" && opt == "--rooms") rooms = static_cast<int>(io::parseInteger(v, "option --rooms", 1, 2000)); else if (command == "sequence" && (opt == "--world" || opt == "--world-in")) world_dir = v;
-        else if (command == "sequence" && opt == "--duration") duration_s = io::parseNumber(v, "option --duration", 1e-3, kMaxDuration_s);
-        else if (command == "sequence" && opt == "--changes") changes = io::parseNumber(v, "option --changes", 0, 1);
-        else if (command == "sequence" && opt == "--kidnap-at") kidnap_at_s = io::parseNumber(v, "option --kidnap-at", 0, kMaxDuration_s);
-        else throw std::invalid_argument("unknown option '" + opt + "' for command '" + command + "'");
-    }
-    if (!seed_given) throw std::invalid_argument("option --seed is required");
-    if (out_dir.empty()) throw std::invalid_argument("option --out is required");
+    io::CommandSet set = commandSet();
+    const io::CommandLine* c = set.parse(args, out);
+    if (!c) return false;
+    command = args.front();
+    seed = static_cast<std::uint64_t>(*c->integer("seed", 0, kMaxSeed));
+    seed_given = true;
+    out_dir = c->value("out");
+    config_path = c->value("config");
     if (command == "world") {
+        if (c->has("builtin")) builtin = c->value("builtin");
+        size_m2 = c->number("size-m2", 1, 1e6);
+        if (auto r = c->integer("rooms", 1, 2000)) rooms = static_cast<int>(*r);
         if (builtin != "office") throw std::invalid_argument("option --builtin: unknown world '" + builtin + "' (only 'office')");
         if (size_m2 && rooms) throw std::invalid_argument("options --size-m2 and --rooms exclude each other");
-        if (size_m2 && !(*size_m2 > 0)) throw std::invalid_argument("option --size-m2 must be > 0");
     } else {
-        if (world_dir.empty()) throw std::invalid_argument("option --world is required");
-        if (duration_s && !(*duration_s > 0)) throw std::invalid_argument("option --duration must be > 0");
-        if (changes && !(*changes >= 0 && *changes <= 1)) throw std::invalid_argument("option --changes must be in [0, 1]");
-        // negative means "off" only in the .ini (its default); on the command line it is a mistake
-        if (kidnap_at_s && !(*kidnap_at_s >= 0))
-            throw std::invalid_argument("option --kidnap-at must be >= 0 (s after the start of the sequence)");
+        world_dir = c->value("world");
+        duration_s = c->number("duration", 1e-3, kMaxDuration_s);
+        changes = c->number("changes", 0, 1);
+        kidnap_at_s = c->number("kidnap-at", 0, kMaxDuration_s);
+        coverage = c->has("coverage");
+        lidar = c->has("lidar");
     }
     return true;
 }

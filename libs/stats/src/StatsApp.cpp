@@ -1,7 +1,6 @@
 /// \file StatsApp.cpp
 #include <simp/io/StrictIni.h>
-#include <simp/io/StrictNumber.h>
-#include <simp/io/ToolArgs.h>
+#include <simp/io/CommandLine.h>
 #include <simp/stats/NoiseModelFiles.h>
 #include <simp/stats/NoisePlot.h>
 #include <simp/stats/StatsApp.h>
@@ -17,28 +16,28 @@ namespace simp::stats {
 
 namespace fs = std::filesystem;
 
-std::string StatsApp::usage() {
-    return "Usage: simp-stats --rawlog Q/sequence.rawlog --poses Q/groundtruth.tum --world W --out DIR\n"
-           "                  [--delta M] [--config INI]\n"
-           "Fits the per-class detection noise N(mu, Sigma) in the object frame (paper Sec. Statistical\n"
-           "Analysis) and writes DIR/class_noise.json, class_noise.csv, class_noise_stats.csv, noise_<class>.png.\n"
-           "  --rawlog   detections (CObservationObjects3D) with timestamps\n"
-           "  --poses    ground-truth robot poses (TUM), interpolated at each observation's time\n"
-           "  --world    world directory (or an objects.json file) with the ground-truth objects\n"
-           "  --delta    matching gate: max centre distance (m), overrides [simp-stats] delta_m\n"
-           "  --config   .ini with a [simp-stats] section (doc/statistics.md)\n";
+io::CommandLine StatsApp::commandLine() {
+    io::CommandLine c("simp-stats",
+                      "Fits the per-class detection noise N(mu, Sigma) in the object frame (paper Sec. Statistical\n"
+                      "Analysis) and writes DIR/class_noise.json, class_noise.csv, class_noise_stats.csv, noise_<class>.png.");
+    c.required("rawlog", "Q/sequence.rawlog", "detections (CObservationObjects3D) with timestamps")
+        .required("poses", "Q/groundtruth.tum", "ground-truth robot poses (TUM), interpolated at each observation's time")
+        .required("world", "W", "world directory (or an objects.json file) with the ground-truth objects")
+        .required("out", "DIR", "output directory")
+        .option("delta", "M", "matching gate: max centre distance, overrides [simp-stats] delta_m")
+        .unit("m")
+        .option("config", "INI", ".ini with a [simp-stats] section (doc/statistics.md)");
+    return c;
 }
 
+std::string StatsApp::usage() { return commandLine().help(); }
+
 bool StatsApp::initialize(int argc, const char* const* argv, std::ostream& out) {
-    const io::ToolArgs a = io::parseToolArgs(argc, argv, {"rawlog", "poses", "world", "out"}, {"config", "delta"});
-    if (a.help) {
-        out << usage();
-        return false;
-    }
-    rawlog_path = a.get("rawlog"), poses_path = a.get("poses"), world_path = a.get("world"), out_dir = a.get("out");
-    if (a.has("config")) config_path = a.get("config");
-    std::optional<double> delta;
-    if (a.has("delta")) delta = io::parseNumber(a.get("delta"), "--delta (m)", 1e-6, 100);
+    io::CommandLine a = commandLine();
+    if (!a.parse(argc, argv, out)) return false;
+    rawlog_path = a.value("rawlog"), poses_path = a.value("poses"), world_path = a.value("world"), out_dir = a.value("out");
+    config_path = a.value("config");
+    const std::optional<double> delta = a.number("delta", 1e-6, 100);
     if (!config_path.empty())
         io::StrictIni(config_path).loadChecked([&](const io::StrictIni& ini) { options.loadFromConfigFile(ini, "simp-stats"); });
     if (delta) options.delta_m = *delta;

@@ -1,31 +1,11 @@
 #include <simp/world/Gridmap.h>
 #include <simp/world/MapConvertApps.h>
 
-#include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::world {
-
-namespace {
-
-/// Parses "--key value" pairs into the given targets; "--help"/"-h" sets help.
-void parseArgs(int argc, const char* const* argv, const std::map<std::string, std::string*>& opts, bool& help,
-               const std::string& usage) {
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--help" || a == "-h") {
-            help = true;
-            return;
-        }
-        const auto it = opts.find(a);
-        if (it == opts.end()) throw std::invalid_argument("unknown option '" + a + "'\n" + usage);
-        if (i + 1 >= argc) throw std::invalid_argument("option " + a + " needs a value\n" + usage);
-        *it->second = argv[++i];
-    }
-}
-
-}  // namespace
 
 std::string describeObjectCounts(const ObjectMapData& data) {
     std::vector<int> counts(data.class_names.size(), 0);
@@ -36,19 +16,25 @@ std::string describeObjectCounts(const ObjectMapData& data) {
     return s;
 }
 
-std::string ImportMapApp::usage() {
-    return "usage: simp-import-map --simp-dir D --out W [--heights INI]\n"
-           "  Reads the authors' map format in D (floor.config, global_variance.json, Map.yaml + image,\n"
-           "  roomseg.png, class_noise.csv) and writes the world directory W (floorplan.yaml/.png,\n"
-           "  rooms.png, objects.json). INI section [class_heights]: <class, '_' for ' '> = height (m).\n"
-           "  See doc/import-export.md.\n";
+io::CommandLine ImportMapApp::commandLine() {
+    io::CommandLine c("simp-import-map",
+                      "Reads the authors' map format in D (floor.config, global_variance.json, Map.yaml + image,\n"
+                      "roomseg.png, class_noise.csv) and writes the world directory W (floorplan.yaml/.png,\n"
+                      "rooms.png, objects.json). See doc/import-export.md.");
+    c.required("simp-dir", "D", "the authors' map directory")
+        .required("out", "W", "the world directory to write")
+        .option("heights", "INI", "section [class_heights]: <class, '_' for ' '> = height (m)");
+    return c;
 }
 
+std::string ImportMapApp::usage() { return commandLine().help(); }
+
 void ImportMapApp::initialize(int argc, const char* const* argv) {
-    parseArgs(argc, argv, {{"--simp-dir", &simp_dir}, {"--out", &out_dir}, {"--heights", &heights_ini}}, help_, usage());
+    io::CommandLine c = commandLine();
+    std::ostringstream help;
+    help_ = !c.parse(argc, argv, help);
     if (help_) return;
-    if (simp_dir.empty()) throw std::invalid_argument("missing --simp-dir D\n" + usage());
-    if (out_dir.empty()) throw std::invalid_argument("missing --out W\n" + usage());
+    simp_dir = c.value("simp-dir"), out_dir = c.value("out"), heights_ini = c.value("heights");
 }
 
 int ImportMapApp::run(std::ostream& out) {
@@ -78,32 +64,36 @@ int ImportMapApp::run(std::ostream& out) {
     return 0;
 }
 
-std::string ExportMapApp::usage() {
-    return "usage: simp-export-map --world W [--out D] [--gridmap F.gridmap] [--octomap F.bt|F.ot]\n"
-           "                       [--resolution M] [--config INI]\n"
-           "  --out D      the world directory W in the authors' map format (floor.config,\n"
-           "               global_variance.json/.csv, Map.yaml + Map.png, roomseg.png, class_noise.csv,\n"
-           "               category_meta.json). See doc/import-export.md.\n"
-           "  --gridmap F  the floor plan as MRPT's .gridmap (gzip-compressed COccupancyGridMap2D), the\n"
-           "               map_file of MRPT's pf-localization. See doc/plugin.md.\n"
-           "  --octomap F  the 3D metric-semantic map through OctoMap: .bt (OcTree, binary) or .ot\n"
-           "               (ColorOcTree with class colours): walls extruded to the ceiling, closed doors,\n"
-           "               object boxes, free space. --resolution M: voxel edge (m, default 0.05, overrides\n"
-           "               [octomap] resolution_m of --config INI). See doc/import-export.md.\n"
-           "  At least one of --out, --gridmap, --octomap.\n";
+io::CommandLine ExportMapApp::commandLine() {
+    io::CommandLine c("simp-export-map", "A world directory W -> the authors' map format, MRPT's .gridmap, an OctoMap.");
+    c.required("world", "W", "the world directory to read")
+        .option("out", "D", "the world directory W in the authors' map format (floor.config,\n"
+                            "global_variance.json/.csv, Map.yaml + Map.png, roomseg.png, class_noise.csv,\n"
+                            "category_meta.json). See doc/import-export.md.")
+        .option("gridmap", "F.gridmap", "the floor plan as MRPT's .gridmap (gzip-compressed COccupancyGridMap2D), the\n"
+                                        "map_file of MRPT's pf-localization. See doc/plugin.md.")
+        .option("octomap", "F.bt|F.ot", "the 3D metric-semantic map through OctoMap: .bt (OcTree, binary) or .ot\n"
+                                        "(ColorOcTree with class colours): walls extruded to the ceiling, closed doors,\n"
+                                        "object boxes, free space. See doc/import-export.md.")
+        .option("resolution", "M", "voxel edge (m, default 0.05) of --octomap, overrides [octomap] resolution_m of --config")
+        .option("config", "INI", ".ini with an [octomap] section, for --octomap")
+        .notes("At least one of --out, --gridmap, --octomap.");
+    return c;
 }
 
+std::string ExportMapApp::usage() { return commandLine().help(); }
+
 void ExportMapApp::initialize(int argc, const char* const* argv) {
-    parseArgs(argc, argv,
-              {{"--world", &world_dir}, {"--out", &out_dir}, {"--gridmap", &gridmap_path}, {"--octomap", &octomap_path},
-               {"--config", &config_ini}, {"--resolution", &resolution}},
-              help_, usage());
+    io::CommandLine c = commandLine();
+    std::ostringstream help;
+    help_ = !c.parse(argc, argv, help);
     if (help_) return;
-    if (world_dir.empty()) throw std::invalid_argument("missing --world W\n" + usage());
+    world_dir = c.value("world"), out_dir = c.value("out"), gridmap_path = c.value("gridmap");
+    octomap_path = c.value("octomap"), config_ini = c.value("config"), resolution = c.value("resolution");
     if (out_dir.empty() && gridmap_path.empty() && octomap_path.empty())
-        throw std::invalid_argument("nothing to write: give --out D, --gridmap F or --octomap F\n" + usage());
+        throw std::invalid_argument("nothing to write: give --out D, --gridmap F or --octomap F (see --help)");
     if (octomap_path.empty() && (!config_ini.empty() || !resolution.empty()))
-        throw std::invalid_argument("--config and --resolution are options of --octomap\n" + usage());
+        throw std::invalid_argument("--config and --resolution are options of --octomap (see --help)");
 }
 
 int ExportMapApp::run(std::ostream& out) {

@@ -9,6 +9,8 @@
 ///  5. a kidnapped robot: one more run, teleported halfway (odometry does not see it);
 ///  6. print the tables (success, convergence time, ATE per sequence; the kidnap) and write PNGs.
 
+#include <simp/io/CommandLine.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <ostream>
@@ -76,6 +78,7 @@ class DemoApp {
     void run(std::ostream& out);
 
     static std::string usage();
+    static io::CommandLine commandLine();  ///< the declared options
 
     DemoOptions options;
     /// @name Results

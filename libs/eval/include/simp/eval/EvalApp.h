@@ -9,6 +9,8 @@
 ///   simp-eval plot-map --world W --png F
 ///   simp-eval batch --config config_ini/batch.ini --out DIR [--cores N]
 
+#include <simp/io/CommandSet.h>
+
 #include <map>
 #include <ostream>
 #include <string>
@@ -28,16 +30,22 @@ public:
 
     /// Full usage text.
     static std::string usage();
+    /// The declared sub-commands and their options (the --help text and the checks derive from them).
+    static io::CommandSet commandSet();
 
 private:
     std::string command_;
-    std::map<std::string, std::string> options_;  ///< "--key" -> value ("" for flags)
+    io::CommandLine args_{"simp-eval"};  ///< the parsed sub-command
     bool help_ = false;
 
-    bool has(const std::string& key) const { return options_.count(key) > 0; }
-    const std::string& required(const std::string& key) const;
+    /// @name The parsed options by "--key"
+    /// @{
+    bool has(const std::string& key) const;
+    const std::string& value(const std::string& key) const;
+    const std::string& required(const std::string& key) const;  ///< a required option (checked by the parser)
     /// The option's value as a finite number in [lo, hi] (io::parseNumber), or `fallback` when absent.
     double number(const std::string& key, double fallback, double lo, double hi) const;
+    /// @}
 
     int runTraj(std::ostream& out);
     int runMap(std::ostream& out);

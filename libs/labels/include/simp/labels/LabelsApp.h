@@ -4,6 +4,7 @@
 ///   simp-labels --world W --frames FRAMES.json --detections2d DET.csv|json --out labels.json [--config INI]
 ///               [--iou T] [--poses poses.tum --rig rig.ini|json]
 
+#include <simp/io/CommandLine.h>
 #include <simp/labels/LabelGenerator.h>
 
 #include <ostream>
@@ -17,6 +18,8 @@ class LabelsApp {
     bool initialize(int argc, const char* const* argv, std::ostream& out);
     int run(std::ostream& out);
     static std::string usage();
+    /// The declared options (the --help text and the checks derive from them).
+    static io::CommandLine commandLine();
 
     std::string world_path, frames_path, detections_path, out_path, config_path, poses_path, rig_path;
     LabelOptions options;

@@ -7,6 +7,7 @@
 
 #include <mrpt/math/TPose2D.h>
 #include <simp/eval/TrajectoryMetrics.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/Tum.h>
 
 #include <optional>
@@ -19,6 +20,7 @@ namespace simp::lidar {
 class IcpPosesApp {
    public:
     static std::string usage();
+    static io::CommandLine commandLine();  ///< the declared options
     /// Parses the arguments (without the program name). \return false after --help (printed to `out`).
     /// \throw std::invalid_argument naming the option on bad input.
     bool initialize(const std::vector<std::string>& args, std::ostream& out);

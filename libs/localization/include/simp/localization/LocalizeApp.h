@@ -5,6 +5,7 @@
 /// (as mrpt::apps::MonteCarloLocalization_App).
 
 #include <mrpt/bayes/CParticleFilter.h>
+#include <simp/io/CommandLine.h>
 #include <simp/io/StrictIni.h>
 #include <simp/io/Tum.h>
 #include <simp/maps/CObjectMap.h>
@@ -34,6 +35,8 @@ class LocalizeApp {
     /// Reads and validates the .ini. \throw std::invalid_argument on bad arguments or .ini keys.
     void initialize(int argc, const char* const* argv);
     void initialize(const std::vector<std::string>& args);
+    /// The declared options (the --help text and the checks derive from them).
+    static io::CommandLine commandLine();
 
     /// Runs the filter over the whole rawlog and writes O/estimate.tum, O/steps.csv,
     /// O/final_particles.txt, O/trajectory.png (with the ground truth of --gt) and the --3dscene file. \throw std::runtime_error naming the file

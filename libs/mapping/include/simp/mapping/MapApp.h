@@ -6,6 +6,7 @@
 /// reads the floor plan (+ rooms) of W, maps the 3D detections of the rawlog at the poses of
 /// the TUM file (or of the integrated odometry) and writes the world directory M.
 
+#include <simp/io/CommandLine.h>
 #include <simp/mapping/MapUpdate.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 #include <simp/world/World.h>
@@ -31,6 +32,8 @@ class MapApp {
     /// Parses the command line. Returns false when --help / --version was printed (nothing to run).
     /// \throw std::invalid_argument with the parser's message on bad arguments.
     bool initialize(int argc, const char* const* argv);
+    /// The declared options (the --help text and the checks derive from them).
+    static io::CommandLine commandLine();
     /// Same with parsed arguments; loads and validates the configuration.
     /// \throw std::runtime_error / std::invalid_argument naming the missing file or bad key.
     void initialize(const MapAppArgs& args);

@@ -5,6 +5,8 @@
 ///   simp-sim sequence --world W --seed S --out Q [--config INI] [--duration SEC] [--changes F] [--coverage] [--lidar]
 ///                     [--kidnap-at SEC]
 
+#include <simp/io/CommandSet.h>
+
 #include <cstdint>
 #include <optional>
 #include <ostream>
@@ -22,6 +24,7 @@ class SimApp {
     void run(std::ostream& out);
 
     static std::string usage();
+    static io::CommandSet commandSet();  ///< the declared commands and options
 
     std::string command;               ///< "world" or "sequence"
     std::string builtin = "office";

@@ -7,6 +7,7 @@
 /// Writes DIR/class_noise.json, DIR/class_noise.csv, DIR/class_noise_stats.csv and
 /// DIR/noise_<class>.png (doc/statistics.md).
 
+#include <simp/io/CommandLine.h>
 #include <simp/stats/NoiseFit.h>
 #include <simp/stats/OffsetSamples.h>
 #include <simp/stats/StatsOptions.h>
@@ -27,6 +28,8 @@ class StatsApp {
     int run(std::ostream& out);
 
     static std::string usage();
+    /// The declared options (the --help text and the checks derive from them).
+    static io::CommandLine commandLine();
 
     /// @name Results of run()
     /// @{

@@ -1,8 +1,12 @@
 #pragma once
 /// \file StatsOptions.h
 /// Settings of simp-stats, read from section [simp-stats] of an MRPT-style .ini (key = field name).
+/// Each key is declared once, in table(): unit, allowed values and meaning; the default is the
+/// field's initializer below. Loading, range checks, the dump and doc/statistics.md's key table
+/// (checked by tests/stats) derive from that declaration.
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/OptionTable.h>
 
 #include <ostream>
 #include <string>
@@ -10,20 +14,23 @@
 namespace simp::stats {
 
 struct StatsOptions {
-    double delta_m = 1.0;               ///< matching gate delta: centre distance (m)
-    double min_confidence = 0.0;        ///< skip predictions with a lower score
-    double cell_size_m = 0.05;          ///< histogram cell (m), the paper's 5 cm
-    std::string fit_source = "samples"; ///< "samples" (exact ML fit) or "histogram" (cells + Sheppard)
-    double outlier_mahalanobis = 0.0;   ///< > 0: robust fit, reject beyond this Mahalanobis radius
-    int min_samples = 10;               ///< classes with fewer matched samples are not modelled
-    double plot_half_extent_m = 0.0;    ///< PNG half width (m); 0 = 4 sigma around mu, at least 0.5 m
-    int plot_pixels_per_cell = 8;       ///< PNG scale
+    double delta_m = 1.0;
+    double min_confidence = 0.0;
+    double cell_size_m = 0.05;
+    std::string fit_source = "samples";
+    double outlier_mahalanobis = 0.0;
+    int min_samples = 10;
+    double plot_half_extent_m = 0.0;
+    int plot_pixels_per_cell = 8;
 
-    /// Reads [section]; missing keys keep their defaults.
-    /// \throw std::invalid_argument naming the key for an out-of-range value.
+    /// The declaration of every key (section "simp-stats").
+    static const io::OptionTable<StatsOptions>& table();
+
+    /// Reads [section]; missing keys keep their values. \throw std::invalid_argument naming the key.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
-    /// Checks ranges; throws std::invalid_argument naming the key.
+    /// Checks the allowed values; throws std::invalid_argument naming the key.
     void validate() const;
+    /// What is used, as an .ini section with each key's meaning and unit.
     void dumpToTextStream(std::ostream& out) const;
 };
 

@@ -3,6 +3,7 @@
 /// The logic of `simp-import-map` and `simp-export-map` (rawlog_tools/), testable in-process:
 /// initialize() parses the command line, run() does the work and prints a summary.
 
+#include <simp/io/CommandLine.h>
 #include <simp/world/SimpFormat.h>
 
 #include <functional>
@@ -20,6 +21,7 @@ class ImportMapApp {
     int run(std::ostream& out);
     bool helpRequested() const { return help_; }
     static std::string usage();
+    static io::CommandLine commandLine();  ///< the declared options
 
     std::string simp_dir, out_dir, heights_ini;
     World result;  ///< the imported world (after run)
@@ -36,6 +38,7 @@ class ExportMapApp {
     int run(std::ostream& out);
     bool helpRequested() const { return help_; }
     static std::string usage();
+    static io::CommandLine commandLine();  ///< the declared options
 
     std::string world_dir, out_dir, gridmap_path, octomap_path, config_ini, resolution;
 

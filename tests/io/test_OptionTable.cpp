@@ -1,0 +1,94 @@
+/// \file test_OptionTable.cpp
+/// Options declared once (libs/io OptionTable): loading, range checks, dump, documentation and the
+/// unknown-key check all come from the one declaration.
+#include "common/ErrorOf.h"
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <simp/io/OptionTable.h>
+#include <simp/io/StrictIni.h>
+
+#include <sstream>
+
+using simp::io::OptionTable;
+using simp::io::StrictIni;
+using simp::io::ValueRange;
+using simp_test::errorOf;
+
+namespace {
+
+struct Knobs {
+    double gate_m = 1.0;
+    double weight = 0.5;
+    int count = 10;
+    std::string mode = "fast";
+};
+
+const OptionTable<Knobs>& table() {
+    static const OptionTable<Knobs> t = OptionTable<Knobs>("knobs")
+                                            .number("gate_m", &Knobs::gate_m, "m", ValueRange::positive(), "matching gate")
+                                            .number("weight", &Knobs::weight, "", ValueRange::between(0, 1), "a weight")
+                                            .integer("count", &Knobs::count, ValueRange::atLeast(3), "how many")
+                                            .choice("mode", &Knobs::mode, {"fast", "exact"}, "the mode");
+    return t;
+}
+
+Knobs loaded(const std::string& ini) {
+    Knobs k;
+    table().load(mrpt::config::CConfigFileMemory(ini), "knobs", k);
+    return k;
+}
+
+}  // namespace
+
+TEST(OptionTable, LoadsDeclaredKeysAndKeepsDefaultsOfAbsentOnes) {
+    const Knobs k = loaded("[knobs]\ngate_m = 2.5\nmode = exact\n");
+    EXPECT_DOUBLE_EQ(k.gate_m, 2.5);
+    EXPECT_EQ(k.mode, "exact");
+    EXPECT_DOUBLE_EQ(k.weight, 0.5);
+    EXPECT_EQ(k.count, 10);
+}
+
+TEST(OptionTable, RangesAndChoicesNameKeyUnitAndValue) {
+    EXPECT_EQ(errorOf([] { loaded("[knobs]\ngate_m = 0\n"); }), "[knobs] gate_m: must be > 0 (m), got 0");
+    EXPECT_EQ(errorOf([] { loaded("[knobs]\nweight = 2\n"); }), "[knobs] weight: must be in [0, 1], got 2");
+    EXPECT_EQ(errorOf([] { loaded("[knobs]\ncount = 2\n"); }), "[knobs] count: must be >= 3, got 2");
+    EXPECT_EQ(errorOf([] { loaded("[knobs]\nmode = slow\n"); }), "[knobs] mode: must be 'fast' or 'exact', got 'slow'");
+    Knobs k;
+    k.gate_m = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(errorOf([&] { table().validate(k); }).find("[knobs] gate_m: must be > 0 (m)"), std::string::npos);
+}
+
+TEST(OptionTable, StrictIniKnowsExactlyTheDeclaredKeys) {
+    const StrictIni ini("[knobs]\ngate_m = 2\ncout = 4\n", "k.ini");
+    Knobs k;
+    table().load(ini, "knobs", k);
+    const std::string m = errorOf([&] { ini.checkUnknown(); });
+    EXPECT_NE(m.find("k.ini: [knobs] unknown key 'cout'"), std::string::npos) << m;
+    for (const auto& key : table().keys()) EXPECT_NE(m.find(key), std::string::npos) << key << " not listed as known: " << m;
+    const StrictIni typed("[knobs]\ncount = 3.5\n", "k.ini");
+    EXPECT_NE(errorOf([&] { table().load(typed, "knobs", k); }).find("count = '3.5' is not an integer"), std::string::npos);
+}
+
+TEST(OptionTable, DumpReadsBackAndDocumentsEveryKey) {
+    Knobs k;
+    k.gate_m = 0.25, k.count = 7, k.mode = "exact";
+    std::ostringstream dump;
+    table().dump(k, dump);
+    EXPECT_EQ(dump.str(),
+              "[knobs]\n"
+              "gate_m = 0.25  // matching gate (m)\n"
+              "weight = 0.5  // a weight\n"
+              "count  = 7  // how many\n"
+              "mode   = exact  // the mode\n");
+    const Knobs back = loaded(dump.str());
+    EXPECT_DOUBLE_EQ(back.gate_m, 0.25);
+    EXPECT_EQ(back.count, 7);
+    EXPECT_EQ(back.mode, "exact");
+    EXPECT_EQ(table().markdown(Knobs{}),
+              "| key | default | unit | allowed | meaning |\n|---|---|---|---|---|\n"
+              "| `gate_m` | 1 | m | > 0 | matching gate |\n"
+              "| `weight` | 0.5 |  | in [0, 1] | a weight |\n"
+              "| `count` | 10 |  | >= 3 | how many |\n"
+              "| `mode` | `fast` |  | 'fast' or 'exact' | the mode |\n");
+}
