@@ -129,6 +129,14 @@ void expectSame(const HypothesisSearchParams& a, const HypothesisSearchParams& b
     SIMP_EXPECT_SAME(check_period_s);
 }
 
+void expectSame(const ChallengerParams& a, const ChallengerParams& b) {
+    SIMP_EXPECT_SAME(enabled);
+    SIMP_EXPECT_SAME(win_margin);
+    SIMP_EXPECT_SAME(agree_distance_m);
+    SIMP_EXPECT_SAME(reset_fraction);
+    SIMP_EXPECT_SAME(particles);
+}
+
 void expectSame(const SensorResettingParams& a, const SensorResettingParams& b) {
     SIMP_EXPECT_SAME(global_fraction);
     SIMP_EXPECT_SAME(lost_fraction);
@@ -168,13 +176,15 @@ void expectSame(const simp::maps::CObjectMap::TLikelihoodOptions& a,
 }
 #undef SIMP_EXPECT_SAME
 
-/// The built-in office world and a 20 s sequence, made once per test process with simp-sim's app.
+/// The built-in office world and a 20 s sequence, made once per test process with simp-sim's app,
+/// in a folder of the running test's own (CTest runs the tests of this file in parallel processes).
 struct OfficeRun {
     std::string world, rawlog;
 };
 const OfficeRun& builtinOffice() {
     static const OfficeRun run = [] {
-        const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "localization" / "defaults_office";
+        const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "localization" /
+                             (std::string("defaults_office_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(dir);
         std::ostringstream out;
         for (const std::vector<std::string>& args :
@@ -208,6 +218,7 @@ TEST(LocalizeDefaults, CompiledInDefaultsEqualSimpIniFieldByField) {
     expectSame(a.options.novelty, b.options.novelty);
     expectSame(a.options.resetting, b.options.resetting);
     expectSame(a.options.search, b.options.search);
+    expectSame(a.options.challenger, b.options.challenger);
     expectSame(a.options.lidar, b.options.lidar);
     expectSame(makeObjectMap(*a.params, "")->likelihoodOptions, makeObjectMap(*b.params, kSimpIni)->likelihoodOptions);
     EXPECT_TRUE(a.config_notes.empty());
