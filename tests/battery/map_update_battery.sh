@@ -6,24 +6,28 @@
 # simp-map --update; simp-eval changes scores the change report against the simulator's truth
 # (removed / moved matched through M0's objects, see doc/evaluation.md) and simp-eval map scores the
 # updated map against the changed world Q/world. Prints one TSV row per world and run, then the
-# means. Runs one process at a time (shared 2-core machine). Same inputs, same output.
+# means. Runs $JOBS worlds at a time (default 1; shared 2-core machine). Same inputs, same output.
+# DURATION0: the first session (M0); DURATION: the sessions after the change (issue #16: 600-900 s).
 set -euo pipefail
 OUT=${1:?usage: map_update_battery.sh OUT}
 B=${B:-build/bin}
 WORLD_SEEDS=${WORLD_SEEDS:-"1 2 3 4 5 6 7 8"}
-DURATION=${DURATION:-600}
+DURATION0=${DURATION0:-1200}  # one coverage round of the 10-room office (doc/simulator.md)
+DURATION=${DURATION:-900}
 CHANGES=${CHANGES:-0.3}
 CONFIG=${CONFIG:-config_ini/mapping.ini}
 CLASSES=${CLASSES:-"board,cabinet,desk,drawers,fire extinguisher,oven,potted plant,sink,sofa,table"}  # Table I
+JOBS=${JOBS:-1}     # worlds processed at once (shared 2-core machine: at most 2)
 STAGE=${STAGE:-all}   # data: only simulate and build M0; all: also update and score
 mkdir -p "$OUT"
 rows="$OUT/runs.jsonl"; : > "$rows"
-for ws in $WORLD_SEEDS; do
+one_world() {
+  local ws=$1
   W="$OUT/w$ws"; Q1="$OUT/q1_w$ws"; M0="$OUT/m0_w$ws"
   [ -d "$W" ] || "$B/simp-sim" world --builtin office --seed "$ws" --out "$W" >/dev/null
   # Session 1: the map of an earlier visit.
   [ -f "$Q1/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$W" --seed "$((ws + 100))" --out "$Q1" \
-      --duration "$DURATION" --coverage >/dev/null
+      --duration "$DURATION0" --coverage >/dev/null
   [ -f "$M0/objects.json" ] || "$B/simp-map" --world "$W" --rawlog "$Q1/sequence.rawlog" --poses "$Q1/groundtruth.tum" \
       --out "$M0" --config "$CONFIG" >/dev/null
   for ch in "$CHANGES" 0; do
@@ -38,13 +42,21 @@ for ws in $WORLD_SEEDS; do
     all=$("${ev[@]}" | tail -n 1)
     vis=$("${ev[@]}" --visited "$Q/groundtruth.tum" | tail -n 1)
     mp=$("$B/simp-eval" map --gt "$Q/world" --map "$M" --classes "$CLASSES" --json | tail -n 1)
-    echo "{\"world\": $ws, \"changes\": $ch, \"all\": $all, \"visited\": $vis, \"map\": $mp}" >> "$rows"
+    st=$(python3 "$(dirname "$0")/stale_objects.py" "$M/objects.json" "$Q/world/objects.json" "$Q/changes.json" "$CLASSES")
+    echo "{\"world\": $ws, \"changes\": $ch, \"all\": $all, \"visited\": $vis, \"map\": $mp, \"stale\": $st}" >> "$rows"
   done
+}
+running=0
+for ws in $WORLD_SEEDS; do  # $JOBS worlds at once; each appends its rows (sorted when summarized)
+  one_world "$ws" &
+  running=$((running + 1))
+  if [ "$running" -ge "$JOBS" ]; then wait -n; running=$((running - 1)); fi
 done
+wait
 [ "$STAGE" = all ] || exit 0
 python3 - "$rows" <<'PY'
 import json, sys
-runs = [json.loads(l) for l in open(sys.argv[1])]
+runs = sorted((json.loads(l) for l in open(sys.argv[1])), key=lambda r: (r["world"], r["changes"]))
 kinds = ("removed", "moved", "added")
 print("world changes | scope   | removed P/R (true) | moved P/R (true) | added P/R (true) | map IoU Pr Rc")
 for r in runs:
@@ -65,6 +77,9 @@ for ch in sorted({r["changes"] for r in runs}):
         print("  %-7s: %s" % (scope, "; ".join(parts)))
     m = lambda key: sum(r["map"][key] for r in rs) / len(rs)
     print("  updated map vs Q/world (mean over worlds): IoU %.3f, Pr %.3f, Rc %.3f" % (m("iou"), m("precision"), m("recall")))
+    ns, nm = sum(r["stale"]["n_stale"] for r in rs), sum(r["stale"]["n_map"] for r in rs)
+    print("  stale objects (tests/battery/stale_objects.py): %d of %d (%.1f %%), per world %s" %
+          (ns, nm, 100.0 * ns / nm if nm else 0, [r["stale"]["n_stale"] for r in rs]))
     if float(ch) == 0:
         false = [sum(r["all"][k]["n_reported"] for k in kinds) for r in rs]
         print("  false changes per world (Table I classes): %s, max %d" % (false, max(false)))

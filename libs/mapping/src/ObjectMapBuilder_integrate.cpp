@@ -153,6 +153,9 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
         m_windows_missed[k.id] += m_windows_missed[d.id];
+        m_windows_in_view[k.id] += m_windows_in_view[d.id];
+        if (const auto it = m_session_means.find(d.id); it != m_session_means.end())
+            addToSessionMean(k.id, it->second.first, it->second.second);
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -208,6 +211,8 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_estimates.erase(id);
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
+    m_windows_in_view.erase(id);
+    m_session_means.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -276,6 +281,7 @@ void ObjectMapBuilder::flush() {
             setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+            addToSessionMean(o.id, l.box, l.n_match);
             matched.insert(o.id);
             ++m_stats.merged;
         } else {
@@ -286,6 +292,7 @@ void ObjectMapBuilder::flush() {
             o.n_skip = 0;
             setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+            addToSessionMean(o.id, l.box, l.n_match);
             added.push_back(o);
             ++m_stats.added;
         }
@@ -298,16 +305,19 @@ void ObjectMapBuilder::flush() {
                 ++m_windows_missed[id];
             }
 
-    // Purge when n_match / n_skip < tau_purge.
+    for (const std::int64_t id : m_window_candidates)
+        if (index_of.count(id)) ++m_windows_in_view[id];
+    // Purge when n_match / n_skip < tau_purge. When updating an earlier map, its objects stay:
+    // the update rule decides at the end on this session's evidence (MapUpdate.h); the purge
+    // rule, on their n_skip from earlier sessions, dropped objects that were there (classes
+    // detected in a fraction of the windows, e.g. potted plants at confidence 0.95).
     const auto purge = [&](const world::MapObject& o) {
+        if (m_earlier_session && isGivenObject(o.id)) return false;
         return o.n_skip > 0 && static_cast<double>(o.n_match) / o.n_skip < m_options.tau_purge;
     };
     const std::size_t before = m_g.objects.size();
     for (const auto& o : m_g.objects)
-        if (purge(o)) {
-            if (isGivenObject(o.id)) m_purged_given[o.id] = evidenceOf(o.id);
-            forget(o.id);
-        }
+        if (purge(o)) forget(o.id);
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());
