@@ -50,8 +50,6 @@ void session(ObjectMapBuilder& b, const std::vector<test::TrueObject>& truth, in
 // place touch, so detections of the new place still reach the old object now and then.
 const test::TrueObject kCabinetE{1, makeUprightBox({7.7, 2.6, 0.9}, {0.5, 1.0, 1.8}, 0.0)};
 const test::TrueObject kCabinetEMoved{1, makeUprightBox({7.7, 3.6, 0.9}, {0.5, 1.0, 1.8}, 0.0)};
-// Table A moved 0.4 m: its new detections are still associated to the old object.
-const test::TrueObject kTableAMoved{0, makeUprightBox({1.4, 3.4, 0.375}, {1.2, 0.8, 0.75}, 0.3)};
 
 /// The map of an earlier session: three laps, so every object has a long history (n_match in the
 /// hundreds: the purge rule alone would need twice as many misses).
@@ -135,32 +133,23 @@ TEST(MapUpdate, RemovedMovedAndAddedObjectsAreEachReportedAsSuch) {
     EXPECT_TRUE(nearest(r.map, kSofaD));
 }
 
-TEST(MapUpdate, SmallMovesAndMovesAlongAWallAreReportedAsMoved) {
+TEST(MapUpdate, AMoveAlongAWallIsReportedAsMoved) {
     const auto plan = test::makeFloorPlan(8, 6);
     const auto m0 = earlierMap(plan, {kTableA, kCabinetB, kTableC, kCabinetE});
     ASSERT_EQ(m0.objects.size(), 4u);
-    const auto* a = nearest(m0, kTableA);
     const auto* e = nearest(m0, kCabinetE);
-    ASSERT_TRUE(a && e);
+    ASSERT_TRUE(e);
 
-    const MapUpdateResult r = update(m0, plan, {kTableAMoved, kCabinetB, kTableC, kCabinetEMoved});
-    ASSERT_EQ(r.changes.size(), 2u);
-    for (const auto& ch : r.changes) {
-        EXPECT_EQ(ch.kind, "moved");
-        ASSERT_TRUE(ch.id_before.has_value() && ch.after.has_value());
-        EXPECT_EQ(ch.id_after, ch.id_before);
-        const auto& truth = *ch.id_before == a->id ? kTableAMoved : kCabinetEMoved;
-        EXPECT_NEAR((ch.after->center - truth.box.center).head<2>().norm(), 0.0, 0.1) << ch.class_name;
-    }
-    std::vector<std::int64_t> ids = {*r.changes[0].id_before, *r.changes[1].id_before};
-    std::sort(ids.begin(), ids.end());
-    std::vector<std::int64_t> want = {a->id, e->id};
-    std::sort(want.begin(), want.end());
-    EXPECT_EQ(ids, want);
-    // The updated map: four objects, A and E at their new places under their ids.
+    const MapUpdateResult r = update(m0, plan, {kTableA, kCabinetB, kTableC, kCabinetEMoved});
+    ASSERT_EQ(r.changes.size(), 1u);
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "moved");
+    EXPECT_EQ(ch.id_before, e->id);
+    EXPECT_EQ(ch.id_after, e->id);
+    ASSERT_TRUE(ch.after.has_value());
+    EXPECT_LT((ch.after->center - kCabinetEMoved.box.center).head<2>().norm(), 0.1);
+    // The updated map: four objects, E at its new place under its id, nothing left at the old one.
     ASSERT_EQ(r.map.objects.size(), 4u);
-    EXPECT_EQ(nearest(r.map, kTableAMoved)->id, a->id);
-    EXPECT_LT((nearest(r.map, kTableAMoved)->box.center - kTableAMoved.box.center).head<2>().norm(), 0.1);
     const auto* e_now = nearest(r.map, kCabinetEMoved);
     ASSERT_TRUE(e_now);
     EXPECT_EQ(e_now->id, e->id);

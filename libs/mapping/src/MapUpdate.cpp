@@ -78,8 +78,8 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     //  - Missed: expected in >= update_min_missed_windows windows, matched in < update_max_seen_fraction
     //    of them. Removed only when that is unlikely for a present object of its class (binomial
     //    test on the class's match rate this session); moved when a new object takes its place.
-    //  - Weak: matched in < update_reassociate_max_seen_fraction, unlikely for a present object, and
-    //    its few matches lie nearer a new object than its old place: moved to that object, else kept.
+    //  - Weak: matched in < update_reassociate_max_seen_fraction, unlikely for a present object:
+    //    moved to a new object of its class nearby (its matches were of that one or a neighbour), else kept.
     //  - Hidden: in view in >= update_min_missed_windows windows but never active (occluded: often by
     //    its own new place in front of the old one) nor matched: moved to a new object, else kept.
     enum class Evidence { Missed, Weak, Hidden };
@@ -139,11 +139,6 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
                 continue;
             const double d = planarDistance(gone[g].before->box, n.box);
             if (d > opt.update_move_max_distance_m) continue;
-            if (gone[g].kind == Evidence::Weak) {
-                // Its few matches must have come from the new place, not from where it stood.
-                const auto now = builder.sessionBoxOf(gone[g].before->id);
-                if (now && planarDistance(*now, n.box) >= planarDistance(*now, gone[g].before->box)) continue;
-            }
             pairs.push_back({d, g, f});
         }
     std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.dist < b.dist; });

@@ -59,7 +59,6 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_windows_matched.clear();
     m_windows_missed.clear();
     m_windows_in_view.clear();
-    m_session_means.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_active.clear();
@@ -74,27 +73,9 @@ SessionEvidence ObjectMapBuilder::evidenceOf(std::int64_t id) const {
     SessionEvidence e;
     if (const auto it = m_windows_matched.find(id); it != m_windows_matched.end()) e.windows_matched = it->second;
     if (const auto it = m_windows_missed.find(id); it != m_windows_missed.end()) e.windows_missed = it->second;
-    if (const auto it = m_session_means.find(id); it != m_session_means.end()) e.detections = it->second.second;
     if (const auto it = m_windows_in_view.find(id); it != m_windows_in_view.end()) e.windows_in_view = it->second;
     return e;
 }
-
-void ObjectMapBuilder::addToSessionMean(std::int64_t id, const geometry::Box3D& box, int n) {
-    auto [it, fresh] = m_session_means.try_emplace(id, box, n);
-    if (fresh) return;
-    it->second.first = mergeBoxes(it->second.first, it->second.second, box, n);
-    it->second.second += n;
-}
-
-std::optional<geometry::Box3D> ObjectMapBuilder::sessionBoxOf(std::int64_t id) const {
-    const auto it = m_session_means.find(id);
-    if (it == m_session_means.end()) return std::nullopt;
-    const auto o = std::find_if(m_g.objects.begin(), m_g.objects.end(), [&](const auto& x) { return x.id == id; });
-    if (o == m_g.objects.end()) return std::nullopt;
-    // As setEstimate: the mean minus the class bias, aligned (or, without the bias option, aligned).
-    return m_options.remove_class_bias ? shownBox(o->class_id, it->second.first) : alignedBox(o->class_id, it->second.first);
-}
-
 
 world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
     world::ObjectMapData out = m_g;

@@ -154,8 +154,6 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         m_windows_matched[k.id] += m_windows_matched[d.id];
         m_windows_missed[k.id] += m_windows_missed[d.id];
         m_windows_in_view[k.id] += m_windows_in_view[d.id];
-        if (const auto it = m_session_means.find(d.id); it != m_session_means.end())
-            addToSessionMean(k.id, it->second.first, it->second.second);
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -212,7 +210,6 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
     m_windows_in_view.erase(id);
-    m_session_means.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -281,7 +278,6 @@ void ObjectMapBuilder::flush() {
             setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
-            addToSessionMean(o.id, l.box, l.n_match);
             matched.insert(o.id);
             ++m_stats.merged;
         } else {
@@ -292,7 +288,6 @@ void ObjectMapBuilder::flush() {
             o.n_skip = 0;
             setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
-            addToSessionMean(o.id, l.box, l.n_match);
             added.push_back(o);
             ++m_stats.added;
         }

@@ -4,19 +4,27 @@
 /// after an ObjectMapBuilder was given the map of an earlier session (setMap(m0, true)) and this
 /// session's detections, decides what changed and writes the updated map.
 ///
-/// Rule (MappingOptions update_*):
+/// Rule (MappingOptions update_*). Only this session's evidence counts (ObjectMapBuilder keeps
+/// m0's objects through the session instead of purging them on their n_skip), so an object with a
+/// long history goes as readily as a new one:
 ///  - removed: an object of m0 that this session expected to see (I_active: in view, in range,
 ///    not occluded, the builder's own visibility) in >= update_min_missed_windows integration
-///    windows without a match, and matched in < update_max_seen_fraction of those windows; or
-///    that the builder's purge rule removed. Only this session's evidence counts, so an object
-///    with a long history goes as readily as a new one.
-///  - moved: a removed object paired with a new (confirmed) object of the same class whose centre
-///    is within update_move_max_distance_m (closest pairs first); it keeps its m0 id. A pair
-///    closer than update_min_move_m is the object re-estimated: no change, the new box replaces it.
+///    windows without a match, matched in < update_max_seen_fraction of them, and for which so
+///    few matches are unlikely if it were there: P(<= matched | expected windows, p) <
+///    update_removal_alpha, p the class's match rate this session (classes detected in a fraction of
+///    the windows, e.g. potted plants at confidence 0.95, need more misses);
+///  - moved: a new (confirmed) object of the same class within update_move_max_distance_m (closest
+///    pairs first) takes the place of an m0 object that was missed as above (the binomial test not
+///    needed: the new object is the second half of the evidence), or matched in fewer than
+///    update_reassociate_max_seen_fraction of its windows (detections of its new place, along a wall,
+///    still reach it), or never active although in view in >= update_min_missed_windows windows
+///    (hidden, typically by its own new place in front of it). It keeps its m0 id. A pair closer
+///    than update_min_move_m is the object re-estimated: no change, the new box replaces it;
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few
 ///  windows' errors must not become a change.
+///  Objects missed without a partner and without the removal evidence stay.
 /// Objects of m0 the session never expected to see stay as they were.
 
 #include <simp/mapping/ObjectMapBuilder.h>
@@ -35,7 +43,8 @@ struct MapUpdateResult {
 
 /// The changes between `m0` (the map given to the builder's setMap) and what the builder made of it.
 /// Confidence: removed = 1 - (matched + 1) / (missed + 2) (Laplace estimate of "not there" from
-/// the session's windows); added = w / (w + 1) with w its matched windows; moved = the smaller of both.
+/// the session's windows; windows in view count as misses for a hidden object); added = w / (w + 1)
+/// with w its matched windows; moved = the smaller of both.
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder);
 
 }  // namespace simp::mapping

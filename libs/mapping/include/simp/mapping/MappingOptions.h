@@ -164,10 +164,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// few windows (high confidence thresholds, often occluded) need more misses.
     double update_removal_alpha = 0.01;
     /// An object missed in >= update_min_missed_windows windows and matched in fewer than this
-    /// fraction (but not few enough to be removed) is moved when a new object of its class stands
-    /// within update_move_max_distance_m and its own session detections lie nearer to it than to
-    /// its old place: the new place's detections matched the old object (moves along a wall).
-    double update_reassociate_max_seen_fraction = 0.5;
+    /// fraction of them (too often for update_max_seen_fraction) is moved when a new object of its
+    /// class stands within update_move_max_distance_m: detections of its new place, or of a
+    /// neighbour, still reach the old object (moves along a wall, a row of cabinets).
+    double update_reassociate_max_seen_fraction = 0.3;
     /// @}
 
     /// @name Detection filter

@@ -46,7 +46,6 @@ struct BuilderStats {
 struct SessionEvidence {
     int windows_matched = 0;
     int windows_missed = 0;
-    int detections = 0;  ///< detections matched this session (local-map n_match summed)
     int windows_in_view = 0;  ///< windows in which it was an association candidate (in view, maybe occluded)
 };
 
@@ -94,10 +93,6 @@ class ObjectMapBuilder {
     bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
     /// This session's evidence about a map object (zero when none).
     SessionEvidence evidenceOf(std::int64_t id) const;
-    /// The object's map box from this session's detections only (their mean, as shown: class bias
-    /// removed, wall-aligned), without its earlier history; nullopt when this session matched none.
-    /// A displaced object of an earlier map shows here where it stands now (MapUpdate.h).
-    std::optional<geometry::Box3D> sessionBoxOf(std::int64_t id) const;
     const world::RoomMap& rooms() const { return m_rooms; }
     const BuilderStats& stats() const { return m_stats; }
     TOptions& options() { return m_options; }
@@ -167,9 +162,6 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
     std::unordered_map<std::int64_t, int> m_windows_in_view;  ///< integrations where it was a candidate
-    /// Per object: the mean of this session's detections (estimate frame) and their count.
-    std::unordered_map<std::int64_t, std::pair<geometry::Box3D, int>> m_session_means;
-    void addToSessionMean(std::int64_t id, const geometry::Box3D& box, int n);
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
