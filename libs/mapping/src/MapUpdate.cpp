@@ -6,8 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <unordered_map>
 
 namespace simp::mapping {
@@ -97,10 +95,6 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const int expected = e.windows_matched + e.windows_missed;
         if (expected == 0) ++r.unseen;
         const double p_present = binomialCdf(e.windows_matched, expected, rate[static_cast<std::size_t>(o.class_id)]);
-        if (std::getenv("SIMP_MU_DEBUG"))  // TEMP
-            std::fprintf(stderr, "DBG id %lld %s m %d x %d v %d rate %.2f cdf %.4f\n", (long long)o.id,
-                         m0.class_names[o.class_id].c_str(), e.windows_matched, e.windows_missed, e.windows_in_view,
-                         rate[o.class_id], p_present);
         if (e.windows_missed >= opt.update_min_missed_windows) {
             if (e.windows_matched < opt.update_max_seen_fraction * expected)
                 gone.push_back({&o, e, Evidence::Missed, p_present < opt.update_removal_alpha});
