@@ -11,11 +11,8 @@
 namespace simp::mapping {
 namespace {
 
-/// Laplace estimate of "not there" from the session's windows; an object never active counts
-/// its windows in view as misses (its hidden case, detectChanges).
 double removedConfidence(const SessionEvidence& e) {
-    const int misses = e.windows_matched + e.windows_missed == 0 ? e.windows_in_view : e.windows_missed;
-    return 1.0 - (e.windows_matched + 1.0) / (misses + 2.0);
+    return 1.0 - (e.windows_matched + 1.0) / (e.windows_missed + 2.0);
 }
 
 double addedConfidence(const SessionEvidence& e) {
@@ -78,13 +75,9 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     //    test on the class's match rate this session); moved when a new object takes its place.
     //  - Weak: matched in < update_reassociate_max_seen_fraction, unlikely for a present object:
     //    moved to a new object of its class nearby (its matches were of that one or a neighbour), else kept.
-    //  - Hidden: in view in >= update_min_missed_windows windows but never active (occluded: often by
-    //    its own new place in front of the old one) nor matched: moved to a new object, else kept.
-    enum class Evidence { Missed, Weak, Hidden };
     struct Gone {
         const world::MapObject* before;
         SessionEvidence evidence;
-        Evidence kind;
         bool removable = false;  // the misses alone justify a removal
     };
     std::vector<Gone> gone;
@@ -97,12 +90,10 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const double p_present = binomialCdf(e.windows_matched, expected, rate[static_cast<std::size_t>(o.class_id)]);
         if (e.windows_missed >= opt.update_min_missed_windows) {
             if (e.windows_matched < opt.update_max_seen_fraction * expected)
-                gone.push_back({&o, e, Evidence::Missed, p_present < opt.update_removal_alpha});
+                gone.push_back({&o, e, p_present < opt.update_removal_alpha});
             else if (e.windows_matched < opt.update_reassociate_max_seen_fraction * expected &&
                      p_present < opt.update_removal_alpha)
-                gone.push_back({&o, e, Evidence::Weak});
-        } else if (expected == 0 && e.windows_in_view >= opt.update_min_missed_windows) {
-            gone.push_back({&o, e, Evidence::Hidden});
+                gone.push_back({&o, e, false});
         }
     }
 

@@ -58,7 +58,6 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_estimates.clear();
     m_windows_matched.clear();
     m_windows_missed.clear();
-    m_windows_in_view.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_active.clear();
@@ -73,7 +72,6 @@ SessionEvidence ObjectMapBuilder::evidenceOf(std::int64_t id) const {
     SessionEvidence e;
     if (const auto it = m_windows_matched.find(id); it != m_windows_matched.end()) e.windows_matched = it->second;
     if (const auto it = m_windows_missed.find(id); it != m_windows_missed.end()) e.windows_missed = it->second;
-    if (const auto it = m_windows_in_view.find(id); it != m_windows_in_view.end()) e.windows_in_view = it->second;
     return e;
 }
 

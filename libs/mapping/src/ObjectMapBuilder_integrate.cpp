@@ -153,7 +153,6 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
         m_windows_missed[k.id] += m_windows_missed[d.id];
-        m_windows_in_view[k.id] += m_windows_in_view[d.id];
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -209,7 +208,6 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_estimates.erase(id);
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
-    m_windows_in_view.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -300,8 +298,6 @@ void ObjectMapBuilder::flush() {
                 ++m_windows_missed[id];
             }
 
-    for (const std::int64_t id : m_window_candidates)
-        if (index_of.count(id)) ++m_windows_in_view[id];
     // Purge when n_match / n_skip < tau_purge. When updating an earlier map, its objects stay:
     // the update rule decides at the end on this session's evidence (MapUpdate.h); the purge
     // rule, on their n_skip from earlier sessions, dropped objects that were there (classes

@@ -16,9 +16,9 @@
 ///  - moved: a new (confirmed) object of the same class within update_move_max_distance_m (closest
 ///    pairs first) takes the place of an m0 object that was missed as above (the binomial test not
 ///    needed: the new object is the second half of the evidence), or matched in fewer than
-///    update_reassociate_max_seen_fraction of its windows (detections of its new place, along a wall,
-///    still reach it), or never active although in view in >= update_min_missed_windows windows
-///    (hidden, typically by its own new place in front of it). It keeps its m0 id. A pair closer
+///    update_reassociate_max_seen_fraction of its windows and unlikely for a present object
+///    (detections of its new place or of a neighbour, along a wall, still reach it). It keeps its
+///    m0 id. A pair closer
 ///    than update_min_move_m is the object re-estimated: no change, the new box replaces it;
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
@@ -43,8 +43,7 @@ struct MapUpdateResult {
 
 /// The changes between `m0` (the map given to the builder's setMap) and what the builder made of it.
 /// Confidence: removed = 1 - (matched + 1) / (missed + 2) (Laplace estimate of "not there" from
-/// the session's windows; windows in view count as misses for a hidden object); added = w / (w + 1)
-/// with w its matched windows; moved = the smaller of both.
+/// the session's windows); added = w / (w + 1) with w its matched windows; moved = the smaller of both.
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder);
 
 }  // namespace simp::mapping

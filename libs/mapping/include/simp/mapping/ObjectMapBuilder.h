@@ -46,7 +46,6 @@ struct BuilderStats {
 struct SessionEvidence {
     int windows_matched = 0;
     int windows_missed = 0;
-    int windows_in_view = 0;  ///< windows in which it was an association candidate (in view, maybe occluded)
 };
 
 /// One object of the short-term local map m^_g.
@@ -161,7 +160,6 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
-    std::unordered_map<std::int64_t, int> m_windows_in_view;  ///< integrations where it was a candidate
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
