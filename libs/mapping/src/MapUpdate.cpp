@@ -2,8 +2,6 @@
 /// Change detection of a map update (MapUpdate.h).
 #include <simp/mapping/MapUpdate.h>
 
-#include <simp/model/NoiseFrame.h>
-
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -123,8 +121,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
                 m0.class_names.at(static_cast<std::size_t>(gone[g].before->class_id)))
                 continue;
             const double d = planarDistance(gone[g].before->box, n.box);
-            if (d > opt.update_move_max_distance_m) continue;
-            pairs.push_back({d, g, f});
+            if (d <= opt.update_move_max_distance_m) pairs.push_back({d, g, f});
         }
     std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.dist < b.dist; });
     std::vector<int> partner_of_gone(gone.size(), -1), partner_of_fresh(fresh.size(), -1);
