@@ -69,7 +69,8 @@ class ObjectMapBuilder {
     /// `earlier_session`: the map of an earlier session being updated (simp-map --update): a
     /// duplicate pair of one of its objects and a new one merges only when this session matched
     /// the old object (else the new one may be the old one displaced, MapUpdate.h), and the old
-    /// object keeps its id.
+    /// object keeps its id. Its objects are not purged (their n_skip carries earlier sessions):
+    /// detectChanges() decides on this session's evidence.
     /// \throw std::invalid_argument naming the object index when a box is invalid or its class id unknown.
     void setMap(const world::ObjectMapData& map, bool earlier_session = false);
 
