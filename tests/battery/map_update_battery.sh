@@ -19,8 +19,9 @@ CONFIG=${CONFIG:-config_ini/mapping.ini}
 CLASSES=${CLASSES:-"board,cabinet,desk,drawers,fire extinguisher,oven,potted plant,sink,sofa,table"}  # Table I
 JOBS=${JOBS:-1}     # worlds processed at once (shared 2-core machine: at most 2)
 STAGE=${STAGE:-all}   # data: only simulate and build M0; all: also update and score
+LOCALIZE=${LOCALIZE:-0}  # 1: also localize on M and on Q/world (issue #16's last target)
 mkdir -p "$OUT"
-rows="$OUT/runs.jsonl"; : > "$rows"
+rows="$OUT/runs.jsonl"; : > "$rows"; : > "$OUT/localization.tsv"
 one_world() {
   local ws=$1
   W="$OUT/w$ws"; Q1="$OUT/q1_w$ws"; M0="$OUT/m0_w$ws"
@@ -44,6 +45,21 @@ one_world() {
     mp=$("$B/simp-eval" map --gt "$Q/world" --map "$M" --classes "$CLASSES" --json | tail -n 1)
     st=$(python3 "$(dirname "$0")/stale_objects.py" "$M/objects.json" "$Q/world/objects.json" "$Q/changes.json" "$CLASSES")
     echo "{\"world\": $ws, \"changes\": $ch, \"all\": $all, \"visited\": $vis, \"map\": $mp, \"stale\": $st}" >> "$rows"
+  done
+  [ "$STAGE" = all ] && [ "$LOCALIZE" = 1 ] || return 0
+  # Localization (default method and config) on the updated map M and on the changed ground truth
+  # Q/world: two 120 s sequences in Q/world (seeds 300 + S, 400 + S), localization seed 1.
+  Q="$OUT/q2_w${ws}_c$CHANGES"; M="$OUT/m_w${ws}_c$CHANGES"
+  for s in 300 400; do
+    L="$OUT/loc_w${ws}_s$s"
+    [ -f "$L/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$Q/world" --seed $((s + ws)) --duration 120 --out "$L" >/dev/null
+    for mp in "M:$M" "GT:$Q/world"; do
+      O="$OUT/loc_w${ws}_s${s}_${mp%%:*}"
+      "$B/simp-localize" --world "${mp#*:}" --rawlog "$L/sequence.rawlog" --out "$O" --seed 1 --quiet >/dev/null
+      ok=$("$B/simp-eval" traj --gt "$L/groundtruth.tum" --est "$O/estimate.tum" --json | tail -n 1 |
+           python3 -c 'import json,sys; print(int(json.load(sys.stdin)["success"]))')
+      printf '%s\t%s\t%s\t%s\n' "$ws" "$s" "${mp%%:*}" "$ok" >> "$OUT/localization.tsv"
+    done
   done
 }
 running=0
@@ -84,3 +100,7 @@ for ch in sorted({r["changes"] for r in runs}):
         false = [sum(r["all"][k]["n_reported"] for k in kinds) for r in rs]
         print("  false changes per world (Table I classes): %s, max %d" % (false, max(false)))
 PY
+if [ "$LOCALIZE" = 1 ]; then
+  awk -F'\t' '{n[$3]++; k[$3]+=$4} END {for (m in n) printf "localization success on %s: %d of %d sequences\n", (m == "M" ? "the updated map M" : "Q/world"), k[m], n[m]}' \
+      "$OUT/localization.tsv" | sort
+fi
