@@ -27,6 +27,8 @@ TEST(MappingOptions, LoadsKeysAndPerClassLists) {
         "trigger_dist_m = 0.1\n"
         "min_local_support = 0.5\n"
         "room_update_policy = all\n"
+        "update_removal_alpha = 0.05\n"
+        "update_reassociate_max_seen_fraction = 0.4\n"
         "class_min_confidence = potted plant: 0.5, sofa:0.6\n"
         "class_max_range_m = lamp:3.5\n");
     MappingOptions o;
@@ -36,6 +38,8 @@ TEST(MappingOptions, LoadsKeysAndPerClassLists) {
     EXPECT_DOUBLE_EQ(o.min_local_support, 0.5);
     EXPECT_DOUBLE_EQ(o.trigger_angle_rad, 0.1);  // absent key keeps the default
     EXPECT_EQ(o.room_policy, RoomUpdatePolicy::All);
+    EXPECT_DOUBLE_EQ(o.update_removal_alpha, 0.05);
+    EXPECT_DOUBLE_EQ(o.update_reassociate_max_seen_fraction, 0.4);
     EXPECT_DOUBLE_EQ(o.filterOf("potted plant").min_confidence, 0.5);
     EXPECT_DOUBLE_EQ(o.filterOf("potted plant").max_range_m, 4.5);  // other fields kept
     EXPECT_DOUBLE_EQ(o.filterOf("sofa").min_confidence, 0.6);
@@ -62,6 +66,8 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("trigger_dist_m = nan", "trigger_dist_m");
     expectThrowNaming("zbuffer_downscale = 2.5", "zbuffer_downscale");
     expectThrowNaming("room_update_policy = sometimes", "room_update_policy");
+    expectThrowNaming("update_removal_alpha = 1.5", "update_removal_alpha");
+    expectThrowNaming("update_reassociate_max_seen_fraction = -0.1", "update_reassociate_max_seen_fraction");
     expectThrowNaming("class_min_confidence = sink 0.7", "class_min_confidence");
     expectThrowNaming("class_min_confidence = sink:high", "class_min_confidence");
     expectThrowNaming("class_min_confidence = sink:1.5", "sink");

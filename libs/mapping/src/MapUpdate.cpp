@@ -22,6 +22,40 @@ double planarDistance(const geometry::Box3D& a, const geometry::Box3D& b) {
     return (a.center - b.center).head<2>().norm();
 }
 
+/// P(X <= k) for X ~ Binomial(n, p): how likely a present object with match rate p is matched
+/// in at most k of the n windows that expected it.
+double binomialCdf(int k, int n, double p) {
+    double sum = 0;
+    for (int i = 0; i <= std::min(k, n); ++i)
+        sum += std::exp(std::lgamma(n + 1.0) - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0) + i * std::log(p) +
+                        (n - i) * std::log1p(-p));
+    return std::min(1.0, sum);
+}
+
+/// Per class, the rate at which this session matched the earlier map's objects it expected and
+/// did see at least once (objects never matched may be gone: left out). Shrunk towards the rate
+/// over all classes with kPriorWindows pseudo-windows, so a class with one object is not judged
+/// on that object alone. The detector's per-class misses (confidence thresholds, occlusion by
+/// unmapped things) show in this rate, which the map's geometry cannot predict.
+std::vector<double> classMatchRates(const world::ObjectMapData& m0, const ObjectMapBuilder& builder) {
+    constexpr double kPriorWindows = 10.0;
+    std::vector<double> matched(m0.class_names.size(), 0), expected(m0.class_names.size(), 0);
+    double all_m = 0, all_e = 0;
+    for (const auto& o : m0.objects) {
+        const SessionEvidence e = builder.evidenceOf(o.id);
+        if (e.windows_matched == 0) continue;
+        matched[static_cast<std::size_t>(o.class_id)] += e.windows_matched;
+        expected[static_cast<std::size_t>(o.class_id)] += e.windows_matched + e.windows_missed;
+        all_m += e.windows_matched;
+        all_e += e.windows_matched + e.windows_missed;
+    }
+    const double p_all = (all_m + 1.0) / (all_e + 2.0);
+    std::vector<double> rate(m0.class_names.size());
+    for (std::size_t c = 0; c < rate.size(); ++c)
+        rate[c] = std::clamp((matched[c] + kPriorWindows * p_all) / (expected[c] + kPriorWindows), 0.05, 0.99);
+    return rate;
+}
+
 }  // namespace
 
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder) {
@@ -33,25 +67,32 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     std::unordered_map<std::int64_t, std::size_t> index_in_map;
     for (std::size_t k = 0; k < r.map.objects.size(); ++k) index_in_map[r.map.objects[k].id] = k;
 
-    // Objects of m0 gone on this session's evidence (in m0's order: the report's order).
+    // Candidates to leave the map (in m0's order: the report's order). Kinds of evidence:
+    //  - Missed: expected in >= update_min_missed_windows windows, matched in < update_max_seen_fraction
+    //    of them. Removed only when that is unlikely for a present object of its class (binomial
+    //    test on the class's match rate this session); moved when a new object takes its place.
+    //  - Weak: matched in < update_reassociate_max_seen_fraction, unlikely for a present object:
+    //    moved to a new object of its class nearby (its matches were of that one or a neighbour), else kept.
     struct Gone {
         const world::MapObject* before;
         SessionEvidence evidence;
+        bool removable = false;  // the misses alone justify a removal
     };
     std::vector<Gone> gone;
+    const std::vector<double> rate = classMatchRates(m0, builder);
     for (const auto& o : m0.objects) {
-        const auto purged = builder.purgedGivenObjects().find(o.id);
-        if (purged != builder.purgedGivenObjects().end()) {
-            gone.push_back({&o, purged->second});
-            continue;
-        }
         if (!index_in_map.count(o.id)) continue;  // merged into another object of m0: still there
         const SessionEvidence e = builder.evidenceOf(o.id);
         const int expected = e.windows_matched + e.windows_missed;
         if (expected == 0) ++r.unseen;
-        if (e.windows_missed >= opt.update_min_missed_windows &&
-            e.windows_matched < opt.update_max_seen_fraction * expected)
-            gone.push_back({&o, e});
+        const double p_present = binomialCdf(e.windows_matched, expected, rate[static_cast<std::size_t>(o.class_id)]);
+        if (e.windows_missed >= opt.update_min_missed_windows) {
+            if (e.windows_matched < opt.update_max_seen_fraction * expected)
+                gone.push_back({&o, e, p_present < opt.update_removal_alpha});
+            else if (e.windows_matched < opt.update_reassociate_max_seen_fraction * expected &&
+                     p_present < opt.update_removal_alpha)
+                gone.push_back({&o, e, false});
+        }
     }
 
     // New confirmed objects of this session. The earlier map already explains the scene, so a new
@@ -91,6 +132,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     std::vector<world::ChangeRecord> removed, moved, added;
     for (std::size_t g = 0; g < gone.size(); ++g) {
         const world::MapObject& b = *gone[g].before;
+        if (partner_of_gone[g] < 0 && !gone[g].removable) continue;  // no new place, too little evidence: kept
         if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;
         world::ChangeRecord c;
         c.id_before = b.id;

@@ -160,6 +160,8 @@ void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, 
     readDouble(c, s, "update_move_max_distance_m", update_move_max_distance_m);
     readDouble(c, s, "update_min_move_m", update_min_move_m);
     readInt(c, s, "update_min_new_windows", update_min_new_windows);
+    readDouble(c, s, "update_removal_alpha", update_removal_alpha);
+    readDouble(c, s, "update_reassociate_max_seen_fraction", update_reassociate_max_seen_fraction);
     readDouble(c, s, "room_door_width_m", room_door_width_m);
     readDouble(c, s, "room_min_area_m2", room_min_area_m2);
     readDouble(c, s, "room_search_radius_m", room_search_radius_m);
@@ -225,6 +227,8 @@ void MappingOptions::validate() const {
     requireRange(update_move_max_distance_m, 0.0, 100.0, "update_move_max_distance_m");
     requireRange(update_min_move_m, 0.0, 100.0, "update_min_move_m");
     requireRange(update_min_new_windows, 1, 1e6, "update_min_new_windows");
+    requireRange(update_removal_alpha, 0.0, 1.0, "update_removal_alpha");
+    requireRange(update_reassociate_max_seen_fraction, 0.0, 1.0, "update_reassociate_max_seen_fraction");
     if (update_min_move_m > update_move_max_distance_m)
         throw std::invalid_argument("mapping option update_min_move_m (" + std::to_string(update_min_move_m) +
                                     ") must not exceed update_move_max_distance_m (" +
@@ -281,7 +285,8 @@ void MappingOptions::dumpToTextStream(std::ostream& o) const {
       << default_cy_px << " px\n";
     o << "update: removed after >= " << update_min_missed_windows << " missed windows with seen fraction < "
       << update_max_seen_fraction << "; moved within " << update_move_max_distance_m << " m, re-estimated below "
-      << update_min_move_m << " m; new objects after " << update_min_new_windows << " windows\n";
+      << update_min_move_m << " m; new objects after " << update_min_new_windows << " windows; removal alpha "
+      << update_removal_alpha << "; re-associated below seen fraction " << update_reassociate_max_seen_fraction << "\n";
     o << "room_update_policy    = " << (room_policy == RoomUpdatePolicy::CurrentRoom ? "current_room" : "all") << "\n";
     o << "room_door_width_m     = " << room_door_width_m << " m\n";
     o << "room_min_area_m2      = " << room_min_area_m2 << " m^2\n";

@@ -58,7 +58,6 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_estimates.clear();
     m_windows_matched.clear();
     m_windows_missed.clear();
-    m_purged_given.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_active.clear();

@@ -298,16 +298,17 @@ void ObjectMapBuilder::flush() {
                 ++m_windows_missed[id];
             }
 
-    // Purge when n_match / n_skip < tau_purge.
+    // Purge when n_match / n_skip < tau_purge. When updating an earlier map, its objects stay:
+    // the update rule decides at the end on this session's evidence (MapUpdate.h); the purge
+    // rule, on their n_skip from earlier sessions, dropped objects that were there (classes
+    // detected in a fraction of the windows, e.g. potted plants at confidence 0.95).
     const auto purge = [&](const world::MapObject& o) {
+        if (m_earlier_session && isGivenObject(o.id)) return false;
         return o.n_skip > 0 && static_cast<double>(o.n_match) / o.n_skip < m_options.tau_purge;
     };
     const std::size_t before = m_g.objects.size();
     for (const auto& o : m_g.objects)
-        if (purge(o)) {
-            if (isGivenObject(o.id)) m_purged_given[o.id] = evidenceOf(o.id);
-            forget(o.id);
-        }
+        if (purge(o)) forget(o.id);
     m_g.objects.erase(std::remove_if(m_g.objects.begin(), m_g.objects.end(), purge), m_g.objects.end());
     m_stats.purged += before - m_g.objects.size();
     m_g.objects.insert(m_g.objects.end(), added.begin(), added.end());

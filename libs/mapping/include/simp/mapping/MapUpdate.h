@@ -4,19 +4,27 @@
 /// after an ObjectMapBuilder was given the map of an earlier session (setMap(m0, true)) and this
 /// session's detections, decides what changed and writes the updated map.
 ///
-/// Rule (MappingOptions update_*):
+/// Rule (MappingOptions update_*). Only this session's evidence counts (ObjectMapBuilder keeps
+/// m0's objects through the session instead of purging them on their n_skip), so an object with a
+/// long history goes as readily as a new one:
 ///  - removed: an object of m0 that this session expected to see (I_active: in view, in range,
 ///    not occluded, the builder's own visibility) in >= update_min_missed_windows integration
-///    windows without a match, and matched in < update_max_seen_fraction of those windows; or
-///    that the builder's purge rule removed. Only this session's evidence counts, so an object
-///    with a long history goes as readily as a new one.
-///  - moved: a removed object paired with a new (confirmed) object of the same class whose centre
-///    is within update_move_max_distance_m (closest pairs first); it keeps its m0 id. A pair
-///    closer than update_min_move_m is the object re-estimated: no change, the new box replaces it.
+///    windows without a match, matched in < update_max_seen_fraction of them, and for which so
+///    few matches are unlikely if it were there: P(<= matched | expected windows, p) <
+///    update_removal_alpha, p the class's match rate this session (classes detected in a fraction of
+///    the windows, e.g. potted plants at confidence 0.95, need more misses);
+///  - moved: a new (confirmed) object of the same class within update_move_max_distance_m (closest
+///    pairs first) takes the place of an m0 object that was missed as above (the binomial test not
+///    needed: the new object is the second half of the evidence), or matched in fewer than
+///    update_reassociate_max_seen_fraction of its windows and unlikely for a present object
+///    (detections of its new place or of a neighbour, along a wall, still reach it). It keeps its
+///    m0 id. A pair closer
+///    than update_min_move_m is the object re-estimated: no change, the new box replaces it;
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few
 ///  windows' errors must not become a change.
+///  Objects missed without a partner and without the removal evidence stay.
 /// Objects of m0 the session never expected to see stay as they were.
 
 #include <simp/mapping/ObjectMapBuilder.h>

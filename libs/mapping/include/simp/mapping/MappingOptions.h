@@ -158,6 +158,16 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// A new object of the session enters the updated map (and the report, as added or as the new
     /// place of a moved object) once matched in this many integration windows.
     int update_min_new_windows = 10;
+    /// Removal needs the session's misses to be unlikely for a present object: with p the class's
+    /// rate of matched windows among this session's expected windows of the map's objects that it
+    /// did see, P(<= matched of expected | p) (binomial) must be below this. Classes detected in
+    /// few windows (high confidence thresholds, often occluded) need more misses.
+    double update_removal_alpha = 0.01;
+    /// An object missed in >= update_min_missed_windows windows and matched in fewer than this
+    /// fraction of them (too often for update_max_seen_fraction) is moved when a new object of its
+    /// class stands within update_move_max_distance_m: detections of its new place, or of a
+    /// neighbour, still reach the old object (moves along a wall, a row of cabinets).
+    double update_reassociate_max_seen_fraction = 0.3;
     /// @}
 
     /// @name Detection filter

@@ -69,7 +69,8 @@ class ObjectMapBuilder {
     /// `earlier_session`: the map of an earlier session being updated (simp-map --update): a
     /// duplicate pair of one of its objects and a new one merges only when this session matched
     /// the old object (else the new one may be the old one displaced, MapUpdate.h), and the old
-    /// object keeps its id.
+    /// object keeps its id. Its objects are not purged (their n_skip carries earlier sessions):
+    /// detectChanges() decides on this session's evidence.
     /// \throw std::invalid_argument naming the object index when a box is invalid or its class id unknown.
     void setMap(const world::ObjectMapData& map, bool earlier_session = false);
 
@@ -92,8 +93,6 @@ class ObjectMapBuilder {
     bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
     /// This session's evidence about a map object (zero when none).
     SessionEvidence evidenceOf(std::int64_t id) const;
-    /// Objects of the given map that the purge rule removed during this session, with their evidence.
-    const std::map<std::int64_t, SessionEvidence>& purgedGivenObjects() const { return m_purged_given; }
     const world::RoomMap& rooms() const { return m_rooms; }
     const BuilderStats& stats() const { return m_stats; }
     TOptions& options() { return m_options; }
@@ -162,7 +161,6 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
-    std::map<std::int64_t, SessionEvidence> m_purged_given;   ///< purged objects of setMap's map
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
