@@ -26,15 +26,6 @@ std::optional<PreparedDetection> CentreSensorModel::prepare(int map_class, const
     return prepareDetection(map_class, box_in_robot, footprint_in_robot, m_params.noise_reference_range_m, weight);
 }
 
-double CentreSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
-                                            Scratch& /*scratch*/) const {
-    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
-    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
-    const auto hit = m_mp.lookup(det.map_class, wx, wy, det.noise_inv_scale2);  // Eq. globaldist
-    if (hit.object < 0) return m_log_eta;                                        // p_o = 0
-    return std::log(hit.p + (1.0 - hit.p) * m_params.eta);  // Eq. combined with p_g = 1
-}
-
 double CentreSensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
     return logLikelihoodAt(*this, det, pose);
 }

@@ -34,16 +34,6 @@ std::optional<PreparedDetection> EdtSensorModel::prepare(int map_class, const ge
     return prepareDetection(map_class, box_in_robot, footprint_in_robot, m_params.noise_reference_range_m, weight);
 }
 
-double EdtSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
-                                         Scratch& /*scratch*/) const {
-    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
-    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
-    // The beam-end model of the centre, mixed with the same floor eta.
-    const double d = m_edt.distance(det.map_class, wx, wy);
-    const double p_hit = std::exp(-d * d * m_inv_two_sigma2 * det.noise_inv_scale2);
-    return std::log(p_hit + (1.0 - p_hit) * m_params.eta);
-}
-
 double EdtSensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
     return logLikelihoodAt(*this, det, pose);
 }

@@ -30,25 +30,6 @@ std::optional<PreparedDetection> SimpSensorModel::prepare(int map_class, const g
     return prepareDetection(map_class, box_in_robot, footprint_in_robot, m_params.noise_reference_range_m, weight);
 }
 
-double SimpSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
-                                          Scratch& scratch) const {
-    // Detection centre in the world for this pose.
-    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
-    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
-    // Eq. globaldist: p_o = max over the class's objects of p_o(c), o_max its argmax (raster).
-    const auto hit = m_mp.lookup(det.map_class, wx, wy, det.noise_inv_scale2);
-    if (hit.object < 0) return m_log_eta;  // p_o = 0: Eq. combined gives eta
-    // Eq. iouscore: p_g = exp(-(1 - IoU)) between the detection footprint and o_max's.
-    const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(hit.object)];
-    double p_g = m_exp_minus_1;  // IoU = 0
-    const Eigen::Vector2d wc(wx, wy);
-    if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
-        scratch.world_valid = false;
-        p_g = m_iou_score(footprintIou(det, c, s, tx, ty, wc, of, scratch));
-    }
-    return std::log(hit.p * p_g + (1.0 - hit.p) * m_params.eta);  // Eq. combined
-}
-
 double SimpSensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math::TPose2D& pose) const {
     return logLikelihoodAt(*this, det, pose);
 }

@@ -10,6 +10,7 @@
 #include <simp/maps/PreparedDetection.h>
 #include <simp/world/ObjectMapData.h>
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 
@@ -51,7 +52,9 @@ class CentreSensorModel {
     /// sum_log[i] += weight_k log p(z_k | m, poses[i]) for every detection k (LogLikelihoodBatch.h).
     void accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                   const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const;
-    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi).
+    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi). Inline
+    /// (below): a non-inline member of a shared library may be interposed, so GCC would not inline
+    /// it into the batch loop.
     double pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
                              Scratch& scratch) const;
 
@@ -63,5 +66,15 @@ class CentreSensorModel {
     std::size_t m_num_usable_objects = 0;
     double m_log_eta = 0;
 };
+
+// The kernel (see pairLogLikelihood()).
+inline double CentreSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
+                                                   Scratch& /*scratch*/) const {
+    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
+    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
+    const auto hit = m_mp.lookup(det.map_class, wx, wy, det.noise_inv_scale2);  // Eq. globaldist
+    if (hit.object < 0) return m_log_eta;                                        // p_o = 0
+    return std::log(hit.p + (1.0 - hit.p) * m_params.eta);  // Eq. combined with p_g = 1
+}
 
 }  // namespace simp::maps

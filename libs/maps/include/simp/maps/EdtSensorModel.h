@@ -11,6 +11,7 @@
 #include <simp/maps/PreparedDetection.h>
 #include <simp/world/ObjectMapData.h>
 
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -60,7 +61,9 @@ class EdtSensorModel {
     /// sum_log[i] += weight_k log p(z_k | m, poses[i]) for every detection k (LogLikelihoodBatch.h).
     void accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                   const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const;
-    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi).
+    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi). Inline
+    /// (below): a non-inline member of a shared library may be interposed, so GCC would not inline
+    /// it into the batch loop.
     double pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
                              Scratch& scratch) const;
 
@@ -73,5 +76,16 @@ class EdtSensorModel {
     std::size_t m_num_objects = 0;
     double m_inv_two_sigma2 = 0;  ///< 1 / (2 sigma^2) (1/m^2)
 };
+
+// The kernel (see pairLogLikelihood()).
+inline double EdtSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
+                                                Scratch& /*scratch*/) const {
+    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
+    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
+    // The beam-end model of the centre, mixed with the same floor eta.
+    const double d = m_edt.distance(det.map_class, wx, wy);
+    const double p_hit = std::exp(-d * d * m_inv_two_sigma2 * det.noise_inv_scale2);
+    return std::log(p_hit + (1.0 - p_hit) * m_params.eta);
+}
 
 }  // namespace simp::maps

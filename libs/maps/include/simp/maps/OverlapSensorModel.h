@@ -12,7 +12,10 @@
 #include <simp/maps/PreparedDetection.h>
 #include <simp/world/ObjectMapData.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 namespace simp::maps {
@@ -52,7 +55,9 @@ class OverlapSensorModel {
     /// sum_log[i] += weight_k log p(z_k | m, poses[i]) for every detection k (LogLikelihoodBatch.h).
     void accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                   const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const;
-    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi).
+    /// The per-pair kernel, robot at (x, y) = (tx, ty) with (c, s) = (cos phi, sin phi). Inline
+    /// (below): a non-inline member of a shared library may be interposed, so GCC would not inline
+    /// it into the batch loop.
     double pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
                              Scratch& scratch) const;
 
@@ -64,5 +69,24 @@ class OverlapSensorModel {
     double m_log_eta = 0;
     IouScore m_iou_score;  ///< Eq. iouscore
 };
+
+// The kernel (see pairLogLikelihood()).
+inline double OverlapSensorModel::pairLogLikelihood(const PreparedDetection& det, double c, double s, double tx, double ty,
+                                                    Scratch& scratch) const {
+    const double wx = c * det.center_robot_m.x() - s * det.center_robot_m.y() + tx;
+    const double wy = s * det.center_robot_m.x() + c * det.center_robot_m.y() + ty;
+    // Best overlap with any object of the class; IoU plays the association probability.
+    const Eigen::Vector2d wc(wx, wy);
+    double best_iou = 0.0;
+    scratch.world_valid = false;
+    for (const std::int32_t o : m_footprints.class_objects[static_cast<std::size_t>(det.map_class)]) {
+        const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(o)];
+        if (!circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) continue;
+        best_iou = std::max(best_iou, footprintIou(det, c, s, tx, ty, wc, of, scratch));
+    }
+    if (best_iou <= 0.0) return m_log_eta;
+    const double p_g = m_iou_score(best_iou);  // Eq. iouscore
+    return std::log(best_iou * p_g + (1.0 - best_iou) * m_params.eta);
+}
 
 }  // namespace simp::maps
