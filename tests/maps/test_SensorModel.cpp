@@ -184,6 +184,32 @@ TEST(SensorModelSimp, BatchEqualsScalarAndSingw) {
     }
 }
 
+TEST(SensorModelSimp, CamerasTogetherEqualOneCallPerCameraBitForBit) {
+    const auto data = test::smallMap();
+    const auto map = makeMap(data, SensorModelType::Simp);
+    // Three cameras; the third sees 20 detections (more than one chunk of 16), one is weighted.
+    std::vector<std::size_t> many;
+    for (int i = 0; i < 20; ++i) many.push_back(static_cast<std::size_t>(i % 5));
+    const auto a = test::detect(data, kTruth, {0, 1});
+    const auto b = test::detect(data, kTruth, {2});
+    const auto c = test::detect(data, kTruth, many);
+    const std::vector<double> weights_b = {0.3};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-0.4, 0.4);
+    std::vector<TPose2D> poses;
+    for (int i = 0; i < 300; ++i) poses.emplace_back(kTruth.x + u(rng), kTruth.y + u(rng), kTruth.phi + u(rng));
+    std::vector<double> separate(poses.size(), -0.5), together(poses.size(), -0.5);
+    std::size_t used_separate = 0, used_together = 0;
+    map.accumulateLogLikelihoods(a, poses.data(), poses.size(), separate.data(), used_separate);
+    map.accumulateLogLikelihoods(b, poses.data(), poses.size(), separate.data(), used_separate, weights_b.data());
+    map.accumulateLogLikelihoods(c, poses.data(), poses.size(), separate.data(), used_separate);
+    const CObjectMap::WeightedDetections cameras[] = {{&a, nullptr}, {&b, weights_b.data()}, {&c, nullptr}};
+    map.accumulateLogLikelihoods(cameras, 3, poses.data(), poses.size(), together.data(), used_together);
+    EXPECT_EQ(used_separate, 23u);
+    EXPECT_EQ(used_together, 23u);
+    for (std::size_t i = 0; i < poses.size(); ++i) ASSERT_EQ(together[i], separate[i]) << "pose " << i;
+}
+
 /// The value type of `name` built directly with the parameters the .ini of SelectedByTheIniKey sets.
 template <typename Model>
 void expectSameAsTheValueType(const CObjectMap& map, const Model& model, const world::ObjectMapData& data) {

@@ -1,3 +1,4 @@
+#include <simp/maps/LogLikelihoodBatch.h>
 #include <simp/maps/SensorModel.h>
 
 #include <stdexcept>
@@ -57,6 +58,16 @@ double SensorModel::logLikelihood(const PreparedDetection& det, const mrpt::math
 void SensorModel::accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                            const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const {
     std::visit([&](const auto& m) { m.accumulateLogLikelihoods(dets, num_dets, poses, n, sum_log); }, m_model);
+}
+
+void SensorModel::accumulateLogLikelihoodGroups(const PreparedDetection* dets, const std::size_t* group_ends,
+                                                std::size_t num_groups, const mrpt::math::TPose2D* poses,
+                                                std::size_t n, double* sum_log) const {
+    std::visit(
+        [&](const auto& m) {
+            simp::maps::accumulateLogLikelihoodGroups(m, dets, group_ends, num_groups, poses, n, sum_log);
+        },
+        m_model);
 }
 
 const ObjectProbabilityMap& SensorModel::probabilityMap() const {

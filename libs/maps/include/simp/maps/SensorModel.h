@@ -64,6 +64,12 @@ class SensorModel {
     void accumulateLogLikelihoods(const PreparedDetection* dets, std::size_t num_dets,
                                   const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log) const;
 
+    /// Several groups at once (LogLikelihoodBatch.h: accumulateLogLikelihoodGroups): the same
+    /// result, bit for bit, as one accumulateLogLikelihoods() call per group, cos/sin once per pose.
+    void accumulateLogLikelihoodGroups(const PreparedDetection* dets, const std::size_t* group_ends,
+                                       std::size_t num_groups, const mrpt::math::TPose2D* poses, std::size_t n,
+                                       double* sum_log) const;
+
     /// The m_p raster of simp and d; an empty one (no class) for edt and o.
     const ObjectProbabilityMap& probabilityMap() const;
 
