@@ -80,4 +80,19 @@ inline obs::CObservationObjects3D detect(const world::ObjectMapData& m, const mr
     return o;
 }
 
+/// smallMap()'s classes and noise with one axis-aligned chair (0.5 x 0.5 m at (2, 1); class
+/// noise sigma 0.2 x 0.15 m, b = 2): the hand-computed cases of the sensor model tests.
+inline world::ObjectMapData oneChairMap() {
+    auto m = smallMap();
+    m.objects = {object(1, m, "chair", 2.0, 1.0, 0.0, 0.5, 0.5, 0.9)};
+    return m;
+}
+
+/// Detection k of `o` prepared by a sensor model value type (its class looked up by name).
+template <typename Model>
+auto prepared(const Model& model, const world::ObjectMapData& m, const obs::CObservationObjects3D& o, std::size_t k) {
+    const int cls = m.classId(o.classNameOf(o.detections().at(k)));
+    return model.prepare(cls, o.boxInRobot(k), o.footprintInRobot(k));
+}
+
 }  // namespace simp::maps::test

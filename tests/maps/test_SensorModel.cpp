@@ -1,6 +1,8 @@
 // The sensor models (Eqs. globaldist, iouscore, combined and the baselines) on a synthetic map.
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/maps/SensorModel.h>
 
 #include "TestMaps.h"
 
@@ -180,6 +182,91 @@ TEST(SensorModelSimp, BatchEqualsScalarAndSingw) {
         const double mrpt_value = map.computeObservationLikelihood(o, test::pose3D(poses[i]));
         ASSERT_NEAR(mrpt_value, (expected - 1.5) / 4.0, 1e-12);
     }
+}
+
+TEST(SensorModelSimp, CamerasTogetherEqualOneCallPerCameraBitForBit) {
+    const auto data = test::smallMap();
+    const auto map = makeMap(data, SensorModelType::Simp);
+    // Three cameras; the third sees 20 detections (more than one chunk of 16), one is weighted.
+    std::vector<std::size_t> many;
+    for (int i = 0; i < 20; ++i) many.push_back(static_cast<std::size_t>(i % 5));
+    const auto a = test::detect(data, kTruth, {0, 1});
+    const auto b = test::detect(data, kTruth, {2});
+    const auto c = test::detect(data, kTruth, many);
+    const std::vector<double> weights_b = {0.3};
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-0.4, 0.4);
+    std::vector<TPose2D> poses;
+    for (int i = 0; i < 300; ++i) poses.emplace_back(kTruth.x + u(rng), kTruth.y + u(rng), kTruth.phi + u(rng));
+    std::vector<double> separate(poses.size(), -0.5), together(poses.size(), -0.5);
+    std::size_t used_separate = 0, used_together = 0;
+    map.accumulateLogLikelihoods(a, poses.data(), poses.size(), separate.data(), used_separate);
+    map.accumulateLogLikelihoods(b, poses.data(), poses.size(), separate.data(), used_separate, weights_b.data());
+    map.accumulateLogLikelihoods(c, poses.data(), poses.size(), separate.data(), used_separate);
+    const CObjectMap::WeightedDetections cameras[] = {{&a, nullptr}, {&b, weights_b.data()}, {&c, nullptr}};
+    map.accumulateLogLikelihoods(cameras, 3, poses.data(), poses.size(), together.data(), used_together);
+    EXPECT_EQ(used_separate, 23u);
+    EXPECT_EQ(used_together, 23u);
+    for (std::size_t i = 0; i < poses.size(); ++i) ASSERT_EQ(together[i], separate[i]) << "pose " << i;
+}
+
+/// The value type of `name` built directly with the parameters the .ini of SelectedByTheIniKey sets.
+template <typename Model>
+void expectSameAsTheValueType(const CObjectMap& map, const Model& model, const world::ObjectMapData& data) {
+    ASSERT_TRUE(std::holds_alternative<Model>(map.sensorModel()->model()));
+    const auto o = test::detect(data, kTruth, {0, 1, 2, 3});
+    std::vector<PreparedDetection> dets;
+    for (std::size_t k = 0; k < o.size(); ++k) dets.push_back(*test::prepared(model, data, o, k));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> ux(-2, 6), uy(-3, 4), uphi(-M_PI, M_PI), u(-0.3, 0.3);
+    std::vector<TPose2D> poses;
+    for (int i = 0; i < 400; ++i)  // global, then around the truth (most pairs on an object)
+        poses.push_back(i < 200 ? TPose2D(ux(rng), uy(rng), uphi(rng)) : TPose2D(kTruth.x + u(rng), kTruth.y + u(rng), kTruth.phi + u(rng)));
+    std::vector<double> via_map(poses.size(), 0.0), direct(poses.size(), 0.0);
+    std::size_t used = 0;
+    map.accumulateLogLikelihoods(o, poses.data(), poses.size(), via_map.data(), used);
+    model.accumulateLogLikelihoods(dets.data(), dets.size(), poses.data(), poses.size(), direct.data());
+    EXPECT_EQ(used, 4u);
+    std::size_t off_floor = 0;
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+        ASSERT_EQ(via_map[i], direct[i]) << "pose " << i;  // bit for bit
+        off_floor += direct[i] > 4 * std::log(0.2) + 1e-9 ? 1 : 0;
+    }
+    EXPECT_GT(off_floor, 150u);
+}
+
+TEST(SensorModelSelection, TheIniKeySelectsTheValueTypeWithItsParameters) {
+    const auto data = test::smallMap();
+    for (const std::string name : {"simp", "edt", "d", "o"}) {
+        SCOPED_TRACE(name);
+        mrpt::config::CConfigFileMemory ini("[L]\nsensor_model = " + name +
+                                            "\neta = 0.2\nnoise_reference_range_m = 1.5\nmp_resolution_m = 0.04\n"
+                                            "edt_sigma_m = 0.4\nedt_resolution_m = 0.04\n");
+        CObjectMap map;
+        map.likelihoodOptions.loadFromConfigFile(ini, "L");
+        map.setData(data);
+        ObjectProbabilityMap::Options mp;
+        mp.resolution_m = 0.04;
+        if (name == "simp") expectSameAsTheValueType(map, SimpSensorModel(data, {0.2, mp, 1.5}), data);
+        if (name == "d") expectSameAsTheValueType(map, CentreSensorModel(data, {0.2, mp, 1.5}), data);
+        if (name == "o") expectSameAsTheValueType(map, OverlapSensorModel(data, {0.2}), data);
+        if (name == "edt") expectSameAsTheValueType(map, EdtSensorModel(data, {0.2, 0.4, 2.0, 0.04, 1.5}), data);
+    }
+}
+
+TEST(SensorModelSelection, EveryParameterOfTheSetIsChecked) {
+    // An EDT parameter out of range is an error with the simp model too (as before the split).
+    SensorModelParams p;
+    p.edt_sigma_m = -1.0;
+    EXPECT_THROW(SensorModel(test::smallMap(), p), std::invalid_argument);
+    p = {};
+    p.type = SensorModelType::O;
+    p.mp.min_probability = 0.0;
+    EXPECT_THROW(SensorModel(test::smallMap(), p), std::invalid_argument);
+    p = {};
+    EXPECT_TRUE(SensorModel(test::smallMap(), p).probabilityMap().hasClass(test::smallMap().classId("chair")));
+    p.type = SensorModelType::Edt;
+    EXPECT_EQ(SensorModel(test::smallMap(), p).probabilityMap().numClasses(), 0u);  // edt has no m_p
 }
 
 }  // namespace

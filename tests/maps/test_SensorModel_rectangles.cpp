@@ -36,6 +36,12 @@ world::ObjectMapData randomMap(unsigned seed) {
     return m;
 }
 
+/// The map footprints of the Simp or O model.
+const MapFootprints& footprintsOf(const SensorModel& model) {
+    if (const auto* simp = std::get_if<SimpSensorModel>(&model.model())) return simp->footprints();
+    return std::get<OverlapSensorModel>(model.model()).footprints();
+}
+
 /// log p of Simp or O at `pose` recomputed with the generic clipping (geometry::iou of the
 /// world polygons), the same m_p lookup and the same equations.
 double reference(const SensorModel& model, const world::ObjectMapData& data, const PreparedDetection& det,
@@ -47,13 +53,13 @@ double reference(const SensorModel& model, const world::ObjectMapData& data, con
     if (model.params().type == SensorModelType::Simp) {
         const auto hit = model.probabilityMap().lookup(det.map_class, wx, wy, det.noise_inv_scale2);
         if (hit.object < 0) return std::log(eta);
-        const double iou = geometry::iou(fp, model.footprints().objects[static_cast<std::size_t>(hit.object)].polygon);
+        const double iou = geometry::iou(fp, footprintsOf(model).objects[static_cast<std::size_t>(hit.object)].polygon);
         return std::log(hit.p * std::exp(iou - 1.0) + (1.0 - hit.p) * eta);
     }
     double best = 0.0;
     for (std::size_t o = 0; o < data.objects.size(); ++o)
         if (data.objects[o].class_id == det.map_class)
-            best = std::max(best, geometry::iou(fp, model.footprints().objects[o].polygon));
+            best = std::max(best, geometry::iou(fp, footprintsOf(model).objects[o].polygon));
     if (best <= 0.0) return std::log(eta);
     return std::log(best * std::exp(best - 1.0) + (1.0 - best) * eta);
 }
@@ -66,7 +72,7 @@ TEST_P(Rectangles, EqualGenericClippingAtRandomAndExactPoses) {
     params.type = GetParam();
     const SensorModel model(data, params);
     std::size_t rect_objects = 0;
-    for (const auto& f : model.footprints().objects) rect_objects += f.is_rect ? 1 : 0;
+    for (const auto& f : footprintsOf(model).objects) rect_objects += f.is_rect ? 1 : 0;
     EXPECT_EQ(rect_objects, 40u);  // the upright boxes, not the tilted ones
 
     std::mt19937 rng(8);

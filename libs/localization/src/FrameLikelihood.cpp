@@ -15,13 +15,15 @@ std::size_t groupLogLikelihoods(const maps::CObjectMap& map, const std::vector<c
                                 const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
     std::fill(out_log, out_log + n, 0.0);
     std::size_t K = 0;
+    std::vector<maps::CObjectMap::WeightedDetections> cameras;  // weighed together: cos/sin once per pose
     for (const auto* o : group) {
         if (o->obs->empty()) continue;
         if (!o->weights.empty() && o->weights.size() != o->obs->size())
             throw std::invalid_argument("Eq. singw: " + std::to_string(o->weights.size()) + " weights for " +
                                         std::to_string(o->obs->size()) + " detections");
-        map.accumulateLogLikelihoods(*o->obs, poses, n, out_log, K, o->weights.empty() ? nullptr : o->weights.data());
+        cameras.push_back({o->obs.get(), o->weights.empty() ? nullptr : o->weights.data()});
     }
+    if (!cameras.empty()) map.accumulateLogLikelihoods(cameras.data(), cameras.size(), poses, n, out_log, K);
     if (K == 0) return 0;
     for (std::size_t i = 0; i < n; ++i) {
         out_log[i] = model::singwLog(out_log[i], K);

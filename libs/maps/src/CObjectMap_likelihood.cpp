@@ -71,19 +71,68 @@ std::optional<double> CObjectMap::detectionLogLikelihood(const simp::obs::CObser
     return log_p;
 }
 
+namespace {
+
+/// Prepares the usable detections of each observation in chunks of at most kBatch (a chunk is one
+/// group: its log-likelihoods are summed, then added to sum_log) into a stack buffer of `Capacity`
+/// detections, weighed whenever it cannot take another chunk. The chunks and their order do not
+/// depend on `Capacity`: a buffer of kBatch weighs chunk by chunk, a larger one shares cos/sin.
+template <std::size_t Capacity, typename Prepare>
+std::size_t accumulateChunks(const SensorModel& model, const CObjectMap::WeightedDetections* observations,
+                             std::size_t num_observations, const mrpt::math::TPose2D* poses, std::size_t n,
+                             double* sum_log, const Prepare& prepare) {
+    static_assert(Capacity >= kBatch);
+    std::array<PreparedDetection, Capacity> buffer;
+    std::array<std::size_t, Capacity> group_ends{};
+    std::size_t filled = 0, groups = 0, used = 0;
+    const auto flush = [&] {
+        model.accumulateLogLikelihoodGroups(buffer.data(), group_ends.data(), groups, poses, n, sum_log);
+        filled = groups = 0;
+    };
+    for (std::size_t o = 0; o < num_observations; ++o) {
+        std::size_t next = 0;
+        while (next < observations[o].obs->size()) {
+            if (Capacity - filled < kBatch) flush();
+            const std::size_t count = prepare(observations[o], next, buffer.data() + filled, kBatch);
+            if (count == 0) continue;
+            filled += count;
+            group_ends[groups++] = filled;
+            used += count;
+        }
+    }
+    if (groups > 0) flush();
+    return used;
+}
+
+/// Detections a frame's observations share a buffer of: cos/sin once per pose for up to this many.
+constexpr std::size_t kFrameBatch = 4 * kBatch;
+
+}  // namespace
+
 void CObjectMap::accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs,
                                           const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log,
                                           std::size_t& used, const double* weights) const {
     const auto model = sensorModel();
     if (model->empty()) warnEmptyOnce();
-    std::array<PreparedDetection, kBatch> batch;
-    std::size_t next = 0;
-    while (next < obs.size()) {
-        const std::size_t count = prepareDetections(*model, obs, next, batch.data(), batch.size(), weights);
-        if (count == 0) continue;
-        model->accumulateLogLikelihoods(batch.data(), count, poses, n, sum_log);
-        used += count;
-    }
+    const WeightedDetections one{&obs, weights};
+    // A buffer of one chunk: MRPT calls with one pose per call, so the setup must stay small.
+    used += accumulateChunks<kBatch>(
+        *model, &one, 1, poses, n, sum_log,
+        [&](const WeightedDetections& o, std::size_t& next, PreparedDetection* out, std::size_t cap) {
+            return prepareDetections(*model, *o.obs, next, out, cap, o.weights);
+        });
+}
+
+void CObjectMap::accumulateLogLikelihoods(const WeightedDetections* observations, std::size_t num_observations,
+                                          const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log,
+                                          std::size_t& used) const {
+    const auto model = sensorModel();
+    if (model->empty()) warnEmptyOnce();
+    used += accumulateChunks<kFrameBatch>(
+        *model, observations, num_observations, poses, n, sum_log,
+        [&](const WeightedDetections& o, std::size_t& next, PreparedDetection* out, std::size_t cap) {
+            return prepareDetections(*model, *o.obs, next, out, cap, o.weights);
+        });
 }
 
 double CObjectMap::internal_computeObservationLikelihood(const mrpt::obs::CObservation& obs,

@@ -135,7 +135,8 @@ void run(benchmark::State& state, simp::maps::SensorModelType type, bool global)
     // Where the time goes: fraction of pairs whose centre falls in an m_p support (p_o > 0),
     // and fraction that also needs the polygon clipping (bounding circles overlap).
     if (type == simp::maps::SensorModelType::Simp) {
-        const auto model = map.sensorModel();
+        const auto selected = map.sensorModel();
+        const auto* model = std::get_if<simp::maps::SimpSensorModel>(&selected->model());
         std::size_t hits = 0, clips = 0, det_rects = 0;
         for (std::size_t k = 0; k < obs.size(); ++k) {
             const auto& det = obs.detections()[k];

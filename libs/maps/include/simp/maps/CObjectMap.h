@@ -136,6 +136,18 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     void accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs, const mrpt::math::TPose2D* poses,
                                   std::size_t n, double* sum_log, std::size_t& used,
                                   const double* weights = nullptr) const;
+    /// One observation of several weighed together, with the exponents of its detections
+    /// (nullptr = all 1).
+    struct WeightedDetections {
+        const simp::obs::CObservationObjects3D* obs = nullptr;
+        const double* weights = nullptr;  ///< one per detection of obs, or nullptr
+    };
+    /// accumulateLogLikelihoods() of each of `num_observations` observations in order (e.g. the
+    /// cameras of one frame): the same sums, bit for bit, with the cos/sin of each pose computed
+    /// once for all of them.
+    void accumulateLogLikelihoods(const WeightedDetections* observations, std::size_t num_observations,
+                                  const mrpt::math::TPose2D* poses, std::size_t n, double* sum_log,
+                                  std::size_t& used) const;
     /// Map class id of detection k of `obs`, or -1 when it is ignored (under its class threshold,
     /// class not in the map, or a class the sensor model cannot score).
     int usableClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;

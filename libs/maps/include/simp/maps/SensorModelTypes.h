@@ -1,6 +1,8 @@
 #pragma once
 /// \file SensorModelTypes.h
-/// Which 3D-object sensor model to use and its parameters.
+/// Which 3D-object sensor model to use and the likelihood parameters of all of them, as the .ini's
+/// [<prefix>_likelihoodOpts] gives them (CObjectMap::TLikelihoodOptions::modelParams()); SensorModel
+/// builds the selected model with its own parameter struct (SimpSensorModelParams, ...).
 
 #include <simp/maps/ObjectProbabilityMap.h>
 
@@ -21,17 +23,17 @@ SensorModelType parseSensorModelType(const std::string& name);
 /// Lower-case name, as parsed.
 std::string toString(SensorModelType type);
 
-/// Everything the precomputation and the per-pair evaluation depend on.
+/// Which model, and the parameters of every model (each takes its own: simpParams(), ... in SensorModel.h).
 struct SensorModelParams {
     SensorModelType type = SensorModelType::Simp;
-    double eta = 0.1;                   ///< Eq. combined: likelihood of a false association, in (0, 1)
+    double eta = 0.1;                   ///< Eq. combined: likelihood of a false association, in (0, 1) (all)
     ObjectProbabilityMap::Options mp;   ///< m_p raster (simp, d)
     double edt_sigma_m = 0.3;           ///< EDT: std. dev. of the centre distance (m)
     double edt_max_distance_m = 2.0;    ///< EDT: distances are clamped to this (m)
     double edt_resolution_m = 0.05;     ///< EDT raster cell (m)
     /// Range growth of the detection noise: a detection whose centre is r > this (m) from the robot
     /// is scored with the noise model widened by s = r / this (Sigma -> s^2 Sigma; EDT: sigma -> s
-    /// sigma). Monocular depth error grows with distance. 0 = off (the paper's model).
+    /// sigma). Monocular depth error grows with distance. 0 = off (the paper's model). simp, d, edt.
     double noise_reference_range_m = 0.0;
 
     bool operator==(const SensorModelParams& o) const {
