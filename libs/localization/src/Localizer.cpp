@@ -148,10 +148,13 @@ std::unique_ptr<ObjectMcl> Localizer::makeFilter() const {
     return mcl;
 }
 
-void Localizer::startGlobal() {
+void Localizer::resetUniform(ObjectMcl& mcl, std::size_t n) const {
     auto grid = m_floorplan;  // MRPT's reset takes a non-const map
-    m_mcl->resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold,
-                                 static_cast<int>(m_opts.experiment.particles_count));
+    mcl.resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold, static_cast<int>(n));
+}
+
+void Localizer::startGlobal() {
+    resetUniform(*m_mcl, m_opts.experiment.particles_count);
     m_monitor.reset(LocalizationState::Global);
     m_summary.reset();
     m_challenger.reset();
@@ -358,9 +361,8 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     if (!c.enabled || state != LocalizationState::Lost) return false;
     const std::size_t n = c.particles > 0 ? c.particles : m_opts.experiment.particles_count;
     const auto start = [&] {
-        auto grid = m_floorplan;  // MRPT's reset takes a non-const map
         m_challenger.emplace(Challenger{makeFilter(), StateMonitor(m_opts.state), std::nullopt});
-        m_challenger->mcl->resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold, static_cast<int>(n));
+        resetUniform(*m_challenger->mcl, n);
         ++m_challengers_started;
     };
     if (!m_challenger) {

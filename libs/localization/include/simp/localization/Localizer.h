@@ -116,6 +116,8 @@ class Localizer {
     std::size_t injectFromDetections(ObjectMcl& mcl, LocalizationState state,
                                      const std::vector<WeightedObservation>& observations);
     std::unique_ptr<ObjectMcl> makeFilter() const;
+    /// `n` particles uniform over the floor plan's free space (the start of a global search).
+    void resetUniform(ObjectMcl& mcl, std::size_t n) const;
     /// After the state update ([Challenger]): starts the challenger when the state turns `lost`,
     /// judges it after its updates, drops it when the state is `localized` again. True when the
     /// challenger replaced the current set (m_mcl, m_summary, m_monitor are then its own).
