@@ -33,8 +33,11 @@ for ws in $WORLD_SEEDS; do
   worlds+=("office$ws")
 done
 
-jobs_file="$OUT/jobs.txt"; : > "$jobs_file"
-runs_file="$OUT/runs.tsv"; : > "$runs_file"
+# job and run lists named after the configs: batteries with other configs may share OUT (and its
+# sequences) at the same time
+tag=$(for c in "${CONFIGS[@]}"; do basename "$c" .ini; done | paste -sd_)
+jobs_file="$OUT/jobs_$tag.txt"; : > "$jobs_file"
+runs_file="$OUT/runs_$tag.tsv"; : > "$runs_file"
 for w in "${worlds[@]}"; do
   W="$OUT/w_$w"
   seqs=()

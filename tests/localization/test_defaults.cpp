@@ -51,6 +51,8 @@ void expectSame(const ExperimentOptions& a, const ExperimentOptions& b) {
     SIMP_EXPECT_SAME(cluster_cell_m);
     SIMP_EXPECT_SAME(cluster_phi_bins);
     SIMP_EXPECT_SAME(tracking_min_particles);
+    SIMP_EXPECT_SAME(min_spread_xy_m);
+    SIMP_EXPECT_SAME(min_spread_phi_rad);
     SIMP_EXPECT_SAME(report_from);
     SIMP_EXPECT_SAME(write_particles);
     SIMP_EXPECT_SAME(write_png);

@@ -41,6 +41,7 @@ TEST(LocalizeOptions, LoadsEveryKey) {
         "[LocalizationExperiment]\nparticles_count=123\nseed=9\nsensor_model=d\nfree_cells_threshold=0.6\n"
         "prune_outside_free_space=false\nupdate_min_d_xy=0.2\nupdate_min_d_phi=0.1\nestimate_mode=mean\n"
         "prune_keeps_weight=false\nsingw_per_frame=false\nrecovery_alpha_slow=0.001\nrecovery_alpha_fast=0.1\n"
+        "min_spread_xy_m=0.12\nmin_spread_phi_rad=0.06\n"
         "[MotionModel]\nmodelSelection=thrun\nalfa1_rot_rot=0.2\na1=0.3\n",
         "x.ini");
     LocalizerOptions all;
@@ -59,6 +60,8 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     EXPECT_FALSE(e.prune_keeps_weight);
     EXPECT_DOUBLE_EQ(e.recovery_alpha_slow, 0.001);
     EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.1);
+    EXPECT_DOUBLE_EQ(e.min_spread_xy_m, 0.12);
+    EXPECT_DOUBLE_EQ(e.min_spread_phi_rad, 0.06);
     MotionModelOptions m;
     m.loadFromConfigFile(cfg, "MotionModel");
     EXPECT_EQ(m.mrpt_options.modelSelection, mrpt::obs::CActionRobotMovement2D::mmThrun);
@@ -102,6 +105,8 @@ TEST(LocalizeOptions, RejectsUnknownKeysAndBadValuesByName) {
               std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nrecovery_alpha_fast=1.5\n").find("recovery_alpha"), std::string::npos);
     EXPECT_NE(message("[LocalizationExperiment]\nsingw_per_frame=sometimes\n").find("singw_per_frame"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nmin_spread_xy_m=-0.1\n").find("min_spread_xy_m"), std::string::npos);
+    EXPECT_NE(message("[LocalizationExperiment]\nmin_spread_phi_rad=4\n").find("min_spread_phi_rad"), std::string::npos);
     EXPECT_NE(message("[MotionModel]\nmodelSelection=magic\n").find("modelSelection"), std::string::npos);
     EXPECT_EQ(message("[LocalizationExperiment]\nparticles_count=10\n"), "");
     // MRPT's own option structs are checked too: a value MRPT's atoi would read as 0.

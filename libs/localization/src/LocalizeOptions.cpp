@@ -105,6 +105,10 @@ void ExperimentOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& 
     if (tmin != std::floor(tmin) || tmin > 1e7)
         throw std::invalid_argument(where(s, "tracking_min_particles") + " must be an integer in [0, 1e7]");
     tracking_min_particles = static_cast<std::size_t>(tmin);
+    min_spread_xy_m = readPositive(cfg, s, "min_spread_xy_m", min_spread_xy_m, true);
+    min_spread_phi_rad = readPositive(cfg, s, "min_spread_phi_rad", min_spread_phi_rad, true);
+    if (min_spread_xy_m > 5.0) throw std::invalid_argument(where(s, "min_spread_xy_m") + " must be in [0, 5] m");
+    if (min_spread_phi_rad > M_PI) throw std::invalid_argument(where(s, "min_spread_phi_rad") + " must be in [0, pi] rad");
     const std::string from = cfg.read_string(s, "report_from", report_from == ReportFrom::Localized ? "localized" : "start");
     if (from == "localized")
         report_from = ReportFrom::Localized;
@@ -136,6 +140,8 @@ void ExperimentOptions::dumpToTextStream(std::ostream& out) const {
         << "cluster_cell_m           = " << cluster_cell_m << "\n"
         << "cluster_phi_bins         = " << cluster_phi_bins << "\n"
         << "tracking_min_particles   = " << tracking_min_particles << "\n"
+        << "min_spread_xy_m          = " << min_spread_xy_m << "\n"
+        << "min_spread_phi_rad       = " << min_spread_phi_rad << "\n"
         << "report_from              = " << (report_from == ReportFrom::Localized ? "localized" : "start") << "\n";
 }
 

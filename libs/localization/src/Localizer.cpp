@@ -153,6 +153,17 @@ void Localizer::resetUniform(ObjectMcl& mcl, std::size_t n) const {
     mcl.resetUniformFreeSpace(&grid, m_opts.experiment.free_cells_threshold, static_cast<int>(n));
 }
 
+ParticleSummary Localizer::keepSpread(ObjectMcl& mcl, const ParticleSummary& summary) const {
+    const auto& e = m_opts.experiment;
+    const Eigen::Matrix3d& c = summary.cluster_cov;
+    const double var_xy = 0.5 * (c(0, 0) + c(1, 1));  // per axis
+    const double add_xy = e.min_spread_xy_m * e.min_spread_xy_m - var_xy;
+    const double add_phi = e.min_spread_phi_rad * e.min_spread_phi_rad - c(2, 2);
+    if (!(add_xy > 0) && !(add_phi > 0)) return summary;
+    mcl.jitter(add_xy > 0 ? std::sqrt(add_xy) : 0.0, add_phi > 0 ? std::sqrt(add_phi) : 0.0);
+    return summarizeParticles(mcl, e);
+}
+
 void Localizer::startGlobal() {
     resetUniform(*m_mcl, m_opts.experiment.particles_count);
     m_monitor.reset(LocalizationState::Global);
@@ -319,6 +330,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     }
 
     if (trigger || !m_summary) m_summary = summarizeParticles(*m_mcl, e);
+    if (trigger) m_summary = keepSpread(*m_mcl, *m_summary);
     // The pose now: the filter's estimate moved by the odometry it has not applied yet.
     auto now = mrpt::poses::CPose2D(m_summary->estimate) + m_pending;
     auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);

@@ -174,6 +174,17 @@ void ObjectMcl::resetAround(const mrpt::math::TPose2D& pose, double sigma_xy_m, 
     }
 }
 
+void ObjectMcl::jitter(double sigma_xy_m, double sigma_phi_rad) {
+    auto& rng = mrpt::random::getRandomGenerator();
+    for (auto& p : m_particles) {
+        if (sigma_xy_m > 0) {
+            p.d.x += rng.drawGaussian1D(0.0, sigma_xy_m);
+            p.d.y += rng.drawGaussian1D(0.0, sigma_xy_m);
+        }
+        if (sigma_phi_rad > 0) p.d.phi = mrpt::math::wrapToPi(p.d.phi + rng.drawGaussian1D(0.0, sigma_phi_rad));
+    }
+}
+
 double ObjectMcl::PF_SLAM_computeObservationLikelihoodForParticle(
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions& /*PF_options*/, const size_t /*particleIndexForMap*/,
     const mrpt::obs::CSensoryFrame& observation, const mrpt::poses::CPose3D& x) const {

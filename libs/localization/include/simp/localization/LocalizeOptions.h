@@ -51,6 +51,12 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     /// While localized, the particle count follows a KLD bound ([KLD_options] bins) between this and
     /// particles_count (Fox, IJRR 2003); 0 = always particles_count (the paper).
     std::size_t tracking_min_particles = 1000;
+    /// Floor on the reported cluster's spread, per axis (m) and in heading (rad): after an update whose
+    /// cluster is tighter, every particle is moved by zero-mean Gaussian noise that brings the spread
+    /// up to it. Persistent detection errors let the set collapse onto a biased pose that it can then
+    /// never leave (doc/localization.md "Spread floor"). 0 = off (the paper, simp-paper.ini).
+    double min_spread_xy_m = 0.13;
+    double min_spread_phi_rad = 0.06;
     ReportFrom report_from = ReportFrom::Localized;  ///< first line of estimate.tum
     bool write_particles = true;          ///< write O/final_particles.txt
     bool write_png = true;                ///< write O/trajectory.png

@@ -118,6 +118,9 @@ class Localizer {
     std::unique_ptr<ObjectMcl> makeFilter() const;
     /// `n` particles uniform over the floor plan's free space (the start of a global search).
     void resetUniform(ObjectMcl& mcl, std::size_t n) const;
+    /// [LocalizationExperiment] min_spread_*: widens a set whose cluster is tighter than the floor and
+    /// returns its new summary (the same summary when nothing was done).
+    ParticleSummary keepSpread(ObjectMcl& mcl, const ParticleSummary& summary) const;
     /// After the state update ([Challenger]): starts the challenger when the state turns `lost`,
     /// judges it after its updates, drops it when the state is `localized` again. True when the
     /// challenger replaced the current set (m_mcl, m_summary, m_monitor are then its own).

@@ -80,6 +80,8 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     void resampleTo(std::size_t n);
     /// Draws `n` particles around `pose`: Gaussian with std sigma_xy_m in x and y and sigma_phi_rad
     /// in heading (zero spread allowed), equal weights.
+    /// Moves every particle by zero-mean Gaussian noise (weights kept); the set's seeded generator.
+    void jitter(double sigma_xy_m, double sigma_phi_rad);
     void resetAround(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad, std::size_t n);
     /// @}
 
