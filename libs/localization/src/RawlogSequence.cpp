@@ -130,7 +130,7 @@ class FrameBuilder {
 std::string innermostMessage(const std::exception& e) {
     const std::string all = mrpt::exception_to_str(e);
     const auto pos = all.rfind("Message:");
-    if (pos == std::string::npos) return all;
+    if (pos == std::string::npos) return e.what();  // not MRPT's: no "==== non-MRPT exception ====" banner
     const auto end = all.find('\n', pos);
     std::string m = all.substr(pos + 8, end == std::string::npos ? std::string::npos : end - pos - 8);
     return m.erase(0, m.find_first_not_of(' '));
