@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
@@ -15,6 +16,7 @@
 #include <simp/obs/RawlogReader.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -182,4 +184,41 @@ TEST(HostileNesting, DeepNestingIsAnErrorNotAStackOverflow) {
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THAT(readError(b), HasSubstr("objects nested too deeply"));
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 10.0);
+}
+
+TEST(HostileNesting, RangeScanSizesAreCheckedBeforeMrptResizes) {
+    // MRPT's CObservation2DRangeScan reader resizes three vectors to the scan size in the file (9
+    // bytes a range) and the sensor label to its length before reading them: a 348 KB simulated
+    // LiDAR rawlog with a size of 2^26 took 696 MB.
+    mrpt::obs::CObservation2DRangeScan scan;
+    scan.resizeScanAndAssign(181, 2.0f, true, 0);
+    scan.sensorLabel = "LIDAR";
+    scan.timestamp = mrpt::Clock::fromDouble(1.0);
+    mrpt::obs::CSensoryFrame sf;
+    sf.insert(mrpt::obs::CObservation2DRangeScan::Create(scan));
+    const Bytes ok = [&] {
+        Bytes b = bytesOf(sf);
+        append(b, validFrame());
+        return b;
+    }();
+    EXPECT_EQ(readError(ok), "");
+    const std::string pose = "mrpt::poses::CPose3D";
+    const auto at = std::search(ok.begin(), ok.end(), pose.begin(), pose.end()) - ok.begin();
+    const std::size_t n_at = static_cast<std::size_t>(at) + pose.size() + 1 + 96 + 1;
+    std::uint32_t n = 0;
+    std::memcpy(&n, ok.data() + n_at, 4);
+    ASSERT_EQ(n, 181u) << "the scan size is not where MRPT 2.5 writes it";
+    (void)readError(ok);  // warm-up
+    const long base_kb = peakRssKb();
+    Bytes big = ok;
+    const std::uint32_t huge = 1u << 26;
+    std::memcpy(big.data() + n_at, &huge, 4);
+    EXPECT_THAT(readError(big), HasSubstr("CObservation2DRangeScan 30 bytes into the entry: 67108864 ranges need"));
+    Bytes label = ok;
+    const std::uint32_t long_label = 0x7fffffffu;
+    std::memcpy(label.data() + n_at + 4 + 5 * 181 + 16, &long_label, 4);
+    EXPECT_THAT(readError(label), HasSubstr("sensor label of 2147483647 bytes"));
+#if !defined(__SANITIZE_ADDRESS__)
+    EXPECT_LT(peakRssKb() - base_kb, 8 * 1024) << "peak RSS grew by " << peakRssKb() - base_kb << " KB";
+#endif
 }

@@ -195,7 +195,8 @@ void BoundedArchive::watch(const std::uint8_t* data, std::size_t len) {
             // MRPT copies the name as a C string: a NUL inside the declared length ends it.
             const auto* c = reinterpret_cast<const char*>(data);
             const std::string name(c, ::strnlen(c, len));
-            for (const char* cls : {"CActionCollection", "CSensoryFrame", "CActionRobotMovement2D"})
+            for (const char* cls :
+                 {"CActionCollection", "CSensoryFrame", "CActionRobotMovement2D", "CObservation2DRangeScan"})
                 if (resolvesTo(name, cls)) onHeader(cls, old_format, len + (old_format ? 4 : 1));
         }
     }
@@ -227,6 +228,10 @@ void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size
                  "; corrupted file)");
         return;
     }
+    if (cls == "CObservation2DRangeScan") {
+        if (version >= 6 && version <= 8) checkRangeScan(vbytes, where);
+        return;
+    }
     // Offset of the u32 element count in the object's data (MRPT 2.5 serializeFrom).
     std::size_t offset = 0;
     if (cls == "CActionCollection" && version == 0) offset = 0;
@@ -250,6 +255,32 @@ void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size
         fail(where + " claims " + std::to_string(n) + " elements: with those of the containers before it " +
              std::to_string(m_entry_elements) + ", more than the " + std::to_string(m_entry_left) +
              " bytes left in the file at the entry's start can hold (nested containers; corrupted file)");
+}
+
+void BoundedArchive::checkRangeScan(std::size_t at, const std::string& where) {
+    // MRPT 2.5 CObservation2DRangeScan versions 6-8: aperture (f32), rightToLeft (u8), maxRange (f32),
+    // sensorPose (a CPose3D object), u32 N, then it resizes three vectors to N (9 bytes each: a
+    // 348 KB rawlog with N = 2^26 took 696 MB), N ranges and N validity bytes, stdError (f32),
+    // timestamp (u64), beamAperture (f32), sensorLabel (u32 length, resized before it is read).
+    // Only the CPose3D version 3 MRPT 2.x writes (12 doubles) is located; others are left to MRPT.
+    const auto* b = &peek(at + 9 + 1 + 120 + 1 + 96 + 1 + 4);
+    std::size_t p = at + 9;
+    if (p >= b->size() || !((*b)[p] & 0x80)) return;
+    p += 1 + ((*b)[p] & 0x7f);                                  // the pose's name
+    if (p + 1 + 96 + 1 + 4 > b->size() || (*b)[p] != 3) return;  // version 3, its data, end flag, N
+    p += 1 + 96 + 1;
+    const std::uint32_t n = u32At(*b, p);
+    p += 4;
+    if (std::uint64_t{n} * 5 > bytesLeft() - p)
+        fail(where + ": " + std::to_string(n) + " ranges need " + std::to_string(std::uint64_t{n} * 5) +
+             " bytes but only " + std::to_string(bytesLeft() - p) + " remain in the file (corrupted or truncated)");
+    const std::size_t label_at = p + 5 * std::size_t{n} + 4 + 8 + 4;
+    b = &peek(label_at + 4);
+    if (label_at + 4 > b->size()) return;  // cut by the end of the file: MRPT's reader says so
+    const std::uint32_t label = u32At(*b, label_at);
+    if (label > bytesLeft() - (label_at + 4))
+        fail(where + ": sensor label of " + std::to_string(label) + " bytes, but only " +
+             std::to_string(bytesLeft() - (label_at + 4)) + " remain in the file (corrupted or truncated)");
 }
 
 mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {

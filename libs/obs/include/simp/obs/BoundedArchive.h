@@ -55,6 +55,9 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// entry together, since nested ones claim the same bytes again), at most 64 actions per
     /// collection, at most 1e5 Thrun particles per entry, known motion models.
     void onHeader(const std::string& cls, bool old_format, std::size_t header_bytes);
+    /// The scan size and sensor-label length of an MRPT 2D range scan (the one MRPT observation the
+    /// project writes, `simp-sim --lidar`) whose data starts `at` bytes into the bytes ahead.
+    void checkRangeScan(std::size_t at, const std::string& where);
     [[noreturn]] void fail(const std::string& what);
     /// readObjectGuarded() for an object that must derive from `base` (nullptr: any class), checked
     /// from its header before it is created; action collections are read here (MRPT 2.5's reader
