@@ -1,6 +1,8 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CAction.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
 
@@ -283,7 +285,8 @@ void BoundedArchive::checkRangeScan(std::size_t at, const std::string& where) {
              std::to_string(bytesLeft() - (label_at + 4)) + " remain in the file (corrupted or truncated)");
 }
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded(
+    const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases) {
     m_entry_start = bytesRead();
     m_entry_left = bytesLeft();
     m_entry_elements = m_entry_particles = 0;
@@ -294,27 +297,29 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() {
         ~Reset() { p = nullptr; }
     } reset{m_stack_base};
     try {
-        return readGuarded(nullptr, 0);
+        return readGuarded(entry_bases, 0);
     } catch (const std::exception&) {  // GuardAbort, or MRPT's wrapping of an earlier guard error
         if (!m_guard_error.empty()) throw std::invalid_argument(m_guard_error);
         throw;
     }
 }
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth) {
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(
+    const std::vector<const mrpt::rtti::TRuntimeClassId*>& bases, int depth) {
     std::string class_name;
     bool old_format = false;
     int8_t version = -1;
     internal_ReadObjectHeader(class_name, old_format, version);  // watch() checks guarded classes
-    if (base && class_name == "nullptr")
-        throw std::invalid_argument(m_description + ": a null object where a " + base->className +
-                                    " belongs (corrupted file)");
+    std::string wanted;  // "a X or a Y", for the messages
+    for (const auto* b : bases) wanted += (wanted.empty() ? "a " : " or a ") + std::string(b->className);
+    if (!bases.empty() && class_name == "nullptr")
+        throw std::invalid_argument(m_description + ": a null object where " + wanted + " belongs (corrupted file)");
     mrpt::serialization::CSerializable::Ptr obj;
     if (class_name != "nullptr") {
         const auto* id = mrpt::rtti::findRegisteredClass(class_name);
         if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
-        if (base && !id->derivedFrom(base))
-            throw std::invalid_argument(m_description + ": a '" + class_name + "' where a " + base->className +
+        if (!bases.empty() && std::none_of(bases.begin(), bases.end(), [&](auto* b) { return id->derivedFrom(b); }))
+            throw std::invalid_argument(m_description + ": a '" + class_name + "' where " + wanted +
                                         " belongs (corrupted file)");
         obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
         if (std::string(id->className) == "mrpt::obs::CActionCollection" && version == 0) {
@@ -326,7 +331,7 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::
             const auto n = ReadAs<std::uint32_t>();  // bounded by onHeader()
             for (std::uint32_t i = 0; i < n; ++i) {
                 const auto a = std::dynamic_pointer_cast<mrpt::obs::CAction>(
-                    readGuarded(&mrpt::obs::CAction::GetRuntimeClassIdStatic(), depth + 1));
+                    readGuarded({&mrpt::obs::CAction::GetRuntimeClassIdStatic()}, depth + 1));
                 actions.insertPtr(a);
             }
             if (!old_format && ReadAs<std::uint8_t>() != 0x88)  // MRPT's SERIALIZATION_END_FLAG
@@ -336,6 +341,13 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);
     return obj;
+}
+
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses() {
+    static const std::vector<const mrpt::rtti::TRuntimeClassId*> classes{
+        &mrpt::obs::CSensoryFrame::GetRuntimeClassIdStatic(), &mrpt::obs::CActionCollection::GetRuntimeClassIdStatic(),
+        &mrpt::obs::CObservation::GetRuntimeClassIdStatic()};
+    return classes;
 }
 
 std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive) {

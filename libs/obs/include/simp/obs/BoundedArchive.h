@@ -31,8 +31,13 @@ class BoundedArchive : public mrpt::serialization::CArchive {
 
     /// Like CArchive::ReadObject(), with the guards below on every object the entry holds, however
     /// deeply nested, and nesting bounded (kMaxNestingStackBytes of stack: MRPT's readers recurse).
+    /// `entry_bases` (if any): the entry must derive from one of them, checked from its header before
+    /// MRPT creates and reads it (a rawlog entry is a frame, an action collection or an observation;
+    /// libFuzzer: a 677-byte rawlog whose entry is an `mrpt::img::TCamera` with a camera-name length
+    /// of 2^32-1 took 4.3 GB in MRPT's string reader).
     /// \throw std::invalid_argument naming the class, the field and where in the entry it is.
-    mrpt::serialization::CSerializable::Ptr readObjectGuarded();
+    mrpt::serialization::CSerializable::Ptr readObjectGuarded(
+        const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases = {});
 
    protected:
     size_t write(const void* buf, size_t len) override;  ///< always throws: read only
@@ -59,10 +64,11 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// project writes, `simp-sim --lidar`) whose data starts `at` bytes into the bytes ahead.
     void checkRangeScan(std::size_t at, const std::string& where);
     [[noreturn]] void fail(const std::string& what);
-    /// readObjectGuarded() for an object that must derive from `base` (nullptr: any class), checked
+    /// readObjectGuarded() for an object that must derive from one of `bases` (empty: any class), checked
     /// from its header before it is created; action collections are read here (MRPT 2.5's reader
     /// dereferences a non-CAction element unchecked). `depth`: nesting level (0: a file entry).
-    mrpt::serialization::CSerializable::Ptr readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth);
+    mrpt::serialization::CSerializable::Ptr readGuarded(const std::vector<const mrpt::rtti::TRuntimeClassId*>& bases,
+                                                        int depth);
 
     mrpt::io::CStream& m_in;
     std::uint64_t m_size;
@@ -92,6 +98,9 @@ bool resolvesTo(const std::string& stored, const std::string& cls);
 /// other archives (e.g. MRPT's tools reading through the plugin), whose readers then rely on
 /// the fixed maxima of InputLimits.h alone.
 std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive);
+
+/// The classes a rawlog entry may have: CSensoryFrame, CActionCollection, CObservation (and derived).
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses();
 
 /// Uncompressed size (bytes) of a plain or gzip-compressed file: the file size, or for a gzip
 /// file one streaming decompression pass (constant memory). \throw std::runtime_error naming
