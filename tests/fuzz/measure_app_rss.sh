@@ -35,11 +35,13 @@ b[i:i+4] = (1 << 26).to_bytes(4, 'little')
 open(sys.argv[2], 'wb').write(b)
 P
 sz() { stat -c %s "$1"; }
+# simp-icp-poses starts at the true first pose (x,y from the TUM line, phi = 2 atan2(qz, qw)).
+start=$(awk 'NR==2{printf "%s,%s,%.6f", $2, $3, 2*atan2($7, $8)}' Q/groundtruth.tum)
 rawlog_apps() {  # label file
   peak simp-export-detections "$1" "$(sz "$2")" "$bin/simp-export-detections" --rawlog "$2" --out-csv x.csv
   peak simp-localize "$1" "$(sz "$2")" "$bin/simp-localize" --world W --rawlog "$2" --out O --quiet
   peak simp-map "$1" "$(sz "$2")" "$bin/simp-map" --world W --rawlog "$2" --poses Q/groundtruth.tum --out M
-  peak simp-icp-poses "$1" "$(sz "$2")" "$bin/simp-icp-poses" --world W --rawlog "$2" --initial-pose 0,0,0 --out p.tum
+  peak simp-icp-poses "$1" "$(sz "$2")" "$bin/simp-icp-poses" --world W --rawlog "$2" --initial-pose "$start" --out p.tum
 }
 rawlog_apps tiny Q/sequence.rawlog
 rawlog_apps random random.rawlog
