@@ -5,6 +5,7 @@
 // BoundedArchive::read() recognises every header MRPT reads, at any depth and offset.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include "common/UnderAsan.h"
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -138,7 +139,7 @@ TEST(HostileNesting, HugeCountNestedBeyond64KBIsRejectedInBoundedMemory) {
     EXPECT_THAT(err, HasSubstr("the CSensoryFrame 100"));  // where it lies: 100 0xx bytes in
     EXPECT_THAT(err, HasSubstr("bytes into the entry: element count 40000000 needs at least 120000000 bytes"));
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
-#if !defined(__SANITIZE_ADDRESS__)  // ASan's quarantine keeps freed memory resident
+#if !SIMP_UNDER_ASAN  // ASan's quarantine keeps freed memory resident
     // The input is 100 KB; the read may take a few times that, not the 640 MB MRPT would allocate.
     EXPECT_LT(peakRssKb() - base_kb, 8 * 1024) << "peak RSS grew by " << peakRssKb() - base_kb << " KB";
 #endif
@@ -218,7 +219,7 @@ TEST(HostileNesting, RangeScanSizesAreCheckedBeforeMrptResizes) {
     const std::uint32_t long_label = 0x7fffffffu;
     std::memcpy(label.data() + n_at + 4 + 5 * 181 + 16, &long_label, 4);
     EXPECT_THAT(readError(label), HasSubstr("sensor label of 2147483647 bytes"));
-#if !defined(__SANITIZE_ADDRESS__)
+#if !SIMP_UNDER_ASAN
     EXPECT_LT(peakRssKb() - base_kb, 8 * 1024) << "peak RSS grew by " << peakRssKb() - base_kb << " KB";
 #endif
 }
