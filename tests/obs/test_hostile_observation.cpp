@@ -175,12 +175,12 @@ TEST(HostileObservation, MrptContainerCountsAreGuarded) {
     auto b = oneDetectionFrame();
     const std::size_t header = 1 + std::strlen("mrpt::obs::CSensoryFrame") + 1;
     put<std::uint32_t>(b, header, 0xFFFFFFFFu);
-    EXPECT_THAT(readError(b), HasSubstr("CSensoryFrame: element count 4294967295"));
+    EXPECT_THAT(readError(b), HasSubstr("CSensoryFrame 0 bytes into the entry: element count 4294967295"));
     mrpt::obs::CActionCollection acts;
     auto a = bytesOf(acts);
     const std::size_t aheader = 1 + std::strlen("mrpt::obs::CActionCollection") + 1;
     put<std::uint32_t>(a, aheader, 0x40000000u);
-    EXPECT_THAT(readError(a), HasSubstr("CActionCollection: element count 1073741824"));
+    EXPECT_THAT(readError(a), HasSubstr("CActionCollection 0 bytes into the entry: element count 1073741824"));
 }
 
 namespace {
@@ -259,7 +259,7 @@ TEST(HostileObservation, ActionCollectionsAreBoundedAsAWhole) {
     Bytes many = odometryThenFrame(method_at, model_at);
     const std::size_t count_at = find(many, "mrpt::obs::CActionCollection", 28) + 28 + 1;
     put<std::uint32_t>(many, count_at, 65u);
-    EXPECT_THAT(readError(many), HasSubstr("CActionCollection holds 65 actions (at most 64"));
+    EXPECT_THAT(readError(many), HasSubstr("CActionCollection 0 bytes into the entry holds 65 actions (at most 64"));
     mrpt::obs::CActionCollection acts;
     mrpt::obs::CActionRobotMovement2D::TMotionModelOptions opts;
     opts.modelSelection = mrpt::obs::CActionRobotMovement2D::mmThrun;
@@ -270,7 +270,7 @@ TEST(HostileObservation, ActionCollectionsAreBoundedAsAWhole) {
         acts.insert(mv);
     }
     Bytes two = bytesOf(acts);
-    EXPECT_THAT(readError(two), HasSubstr("ask for 120000 Thrun motion-model particles together"));
+    EXPECT_THAT(readError(two), HasSubstr("the robot movements of one entry ask for 120000 Thrun motion-model particles together"));
 }
 
 TEST(HostileObservation, NestedContainersAreCountedBeforeMrptSizesThem) {
@@ -298,17 +298,20 @@ TEST(HostileObservation, NestedContainersAreCountedBeforeMrptSizesThem) {
         b.insert(b.end(), ok.begin(), ok.end());
         return b;
     };
+    // The nested header is checked as MRPT reads it, 34 bytes in (outer header 30, count 4).
     EXPECT_THAT(readError(wrapped(header("mrpt::obs::CActionCollection", 28), 0, 0x7fffffffu)),
-                HasSubstr("nested mrpt::obs::CActionCollection"));
+                HasSubstr("the CActionCollection 34 bytes into the entry: element count 2147483647"));
     EXPECT_THAT(readError(wrapped(header("mrpt::obs::CActionCollection", 33), 0, 0x7fffffffu)),
-                HasSubstr("holds 2147483647 actions (at most 64"));
+                HasSubstr("the CActionCollection 34 bytes into the entry: element count 2147483647"));
+    EXPECT_THAT(readError(wrapped(header("mrpt::obs::CActionCollection", 33), 0, 65)),
+                HasSubstr("the CActionCollection 34 bytes into the entry holds 65 actions (at most 64"));
     EXPECT_THAT(readError(wrapped(header("x::CSensoryFrame", 16), 2, 1000000u)),
-                HasSubstr("claims 1000000 elements"));
+                HasSubstr("the CSensoryFrame 34 bytes into the entry: element count 1000000"));
     const auto saved = std::filesystem::path(SIMP_SOURCE_DIR) /
                        "tests/data/fuzz_regressions/rawlog/timeout-nested-actioncollection-1.9G.rawlog";
     std::ifstream f(saved, std::ios::binary);
     EXPECT_THAT(readError(Bytes{std::istreambuf_iterator<char>(f), {}}),
-                HasSubstr("nested mrpt::obs::CActionCollection"));
+                HasSubstr("the CActionCollection 34 bytes into the entry: element count 1886547361 needs"));
     EXPECT_EQ(readError(ok), "");  // a valid collection then frame still reads
 }
 

@@ -9,6 +9,7 @@
 // An allocation sized by a forged count instead of by the bytes left (the bug class of issue #14:
 // 1.7 GB from 922 bytes) exceeds the bound by orders of magnitude.
 #include <gtest/gtest.h>
+#include "common/UnderAsan.h"
 #include <mrpt/io/CMemoryStream.h>
 #include <simp/obs/ExampleRawlog.h>
 #include <simp/obs/RawlogReader.h>
@@ -45,7 +46,7 @@ bool readsCleanly(const std::vector<std::uint8_t>& bytes) {
 }  // namespace
 
 TEST(ReaderMemory, HostileCountsKeepPeakRssWithinLinearBoundOfFileSize) {
-#if defined(__SANITIZE_ADDRESS__)
+#if SIMP_UNDER_ASAN
     GTEST_SKIP() << "ASan's quarantine keeps freed memory resident: peak RSS then counts every "
                     "allocation of the 11 000 reads, not the live memory this test bounds";
 #endif

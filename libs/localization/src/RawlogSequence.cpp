@@ -130,7 +130,7 @@ class FrameBuilder {
 std::string innermostMessage(const std::exception& e) {
     const std::string all = mrpt::exception_to_str(e);
     const auto pos = all.rfind("Message:");
-    if (pos == std::string::npos) return all;
+    if (pos == std::string::npos) return e.what();  // not MRPT's: no "==== non-MRPT exception ====" banner
     const auto end = all.find('\n', pos);
     std::string m = all.substr(pos + 8, end == std::string::npos ? std::string::npos : end - pos - 8);
     return m.erase(0, m.find_first_not_of(' '));
@@ -171,7 +171,7 @@ void dispatch(FrameBuilder& builder, const mrpt::serialization::CSerializable::P
         builder.sensoryFrame(sf);
     else if (auto obs = std::dynamic_pointer_cast<mrpt::obs::CObservation>(obj))
         builder.observation(obs);
-    // other objects (comments, ...) carry nothing the filter uses
+    // no other class reaches here: readObjectGuarded(rawlogEntryClasses()) rejects it from its header
 }
 
 }  // namespace
@@ -196,7 +196,7 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
         mrpt::serialization::CSerializable::Ptr obj;
         const std::uint64_t entry_start = arch.bytesRead();
         try {
-            obj = arch.readObjectGuarded();
+            obj = arch.readObjectGuarded(obs::rawlogEntryClasses());
         } catch (const std::exception& e) {
             // A tail cut short (no entry after the failed one) of a file still being written.
             if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && !size.corrupt && isLastEntry(path, entry_start)) {

@@ -1,9 +1,10 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/obs/CAction.h>
 #include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CObservation.h>
+#include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
-#include <simp/obs/HeaderScanner.h>
 
 #include <algorithm>
 #include <cstring>
@@ -15,8 +16,32 @@
 
 namespace simp::obs {
 
+namespace {
+
+/// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300, and a
+/// file cannot ask for more than this in one entry (MRPT 2.5 allocates 32 bytes per particle
+/// before any check).
+constexpr std::uint32_t kMaxThrunParticles = 100000;
+/// A real collection holds 1-3 actions.
+constexpr std::uint32_t kMaxActionsPerCollection = 64;
+/// Each element of a container is an object: name length byte, >= 1 name byte, end flag.
+constexpr std::uint64_t kMinObjectBytes = 3;
+/// Stack MRPT's recursive readers may use below the start of an entry: a valid entry nests 3-4
+/// objects deep (a few KB); 8 MB is a thread's whole stack on Linux.
+constexpr std::size_t kMaxNestingStackBytes = 512 * 1024;
+/// Bytes a robot movement's motion model spans after its version (method, CPose2D header of <= 121
+/// bytes and data, model, six floats, particle count): what onHeader() peeks.
+constexpr std::size_t kMovementPeekBytes = 4 + 1 + 120 + 1 + 24 + 1 + 4 + 24 + 4 + 8;
+
+}  // namespace
+
+bool resolvesTo(const std::string& stored, const std::string& cls) {
+    const auto sep = stored.rfind("::");
+    return (sep == std::string::npos ? stored : stored.substr(sep + 2)) == cls;
+}
+
 BoundedArchive::BoundedArchive(mrpt::io::CStream& in, std::uint64_t size_bytes, std::string description)
-    : m_in(in), m_size(size_bytes), m_description(std::move(description)) {}
+    : m_in(in), m_size(size_bytes), m_description(std::move(description)), m_entry_left(size_bytes) {}
 
 size_t BoundedArchive::write(const void*, size_t) {
     throw std::logic_error("BoundedArchive '" + m_description + "': is read only");
@@ -45,9 +70,16 @@ size_t BoundedArchive::read(void* buf, size_t len) {
     // collection count was cut after 2 bytes allocated > 1 GB). Every read of an archive is of a
     // fixed size, so a short one is the end of the data in the middle of an object.
     if (done < len)
-        throw std::runtime_error("'" + m_description + "': the data ends in the middle of an object (" +
-                                 std::to_string(len) + " bytes wanted, " + std::to_string(done) +
-                                 " left; truncated or corrupted)");
+        fail("'" + m_description + "': the data ends in the middle of an object (" + std::to_string(len) +
+             " bytes wanted, " + std::to_string(done) + " left; truncated or corrupted)");
+    // MRPT's readers recurse into nested objects (a sensory frame where an observation belongs is
+    // read whole); thousands of nested levels cost a few bytes each and would overflow the stack.
+    const auto* here = static_cast<const char*>(__builtin_frame_address(0));
+    if (m_stack_base && m_stack_base > here && static_cast<std::size_t>(m_stack_base - here) > kMaxNestingStackBytes)
+        fail(m_description + ": objects nested too deeply " + std::to_string(bytesRead() - m_entry_start) +
+             " bytes into the entry (more than " + std::to_string(kMaxNestingStackBytes / 1024) +
+             " KB of stack for MRPT's recursive readers; corrupted file)");
+    watch(out, done);
     return done;
 }
 
@@ -69,15 +101,6 @@ const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
 }
 
 namespace {
-
-/// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300, and a
-/// file cannot ask for more than this (MRPT 2.5 allocates 32 bytes per particle before any check).
-constexpr std::uint32_t kMaxThrunParticles = 100000;
-/// How far ahead of an action collection its robot movements are looked for (bytes), and how many
-/// actions a collection may hold: a real one holds 1-3 actions of 100-400 bytes, so every robot
-/// movement of an accepted collection lies inside the window.
-constexpr std::size_t kActionScanBytes = 65536;
-constexpr std::uint32_t kMaxActionsPerCollection = 64;
 
 std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
     std::uint32_t v = 0;
@@ -147,114 +170,168 @@ std::uint64_t checkRobotMovement2D(const std::vector<std::uint8_t>& b, std::size
 
 }  // namespace
 
-void BoundedArchive::guardMotionModels() {
-    // MRPT's CActionCollection reader deserializes its actions with MRPT's own reader, which a
-    // robot movement asks to draw its Thrun particles: check every robot movement ahead first,
-    // whatever namespace its stored name carries, and the particles of all of them together.
-    const auto& b = peek(kActionScanBytes);
-    if (b.size() >= 4 && u32At(b, 0) > kMaxActionsPerCollection)
-        throw std::invalid_argument(m_description + ": CActionCollection holds " + std::to_string(u32At(b, 0)) +
-                                    " actions (at most " + std::to_string(kMaxActionsPerCollection) +
-                                    "; corrupted file)");
-    std::uint64_t particles = 0;
-    for (const auto& h : m_movement_headers.headersIn(b, bytesRead()))
-        if (h.version >= 4 && h.version <= 7) particles += checkRobotMovement2D(b, h.data, m_description);
-    if (particles > kMaxThrunParticles)
-        throw std::invalid_argument(m_description + ": the robot movements of one CActionCollection ask for " +
-                                    std::to_string(particles) + " Thrun motion-model particles together (at most " +
-                                    std::to_string(kMaxThrunParticles) + "; corrupted file)");
+namespace {
+
+/// What fail() throws. MRPT's readers catch every exception at each nesting level and rethrow it
+/// wrapped with a backtrace (internal_ReadObject, MRPT_END), except std::bad_alloc, which passes
+/// unchanged: a guard error from 1 000 levels deep took 105 s to surface that way. It is turned
+/// into std::invalid_argument with the same message by readObjectGuarded().
+struct GuardAbort : std::bad_alloc {
+    const char* what() const noexcept override { return "simp::obs::BoundedArchive guard (see its message)"; }
+};
+
+}  // namespace
+
+void BoundedArchive::fail(const std::string& what) {
+    if (!m_stack_base) throw std::invalid_argument(what);  // not inside readObjectGuarded()
+    if (m_guard_error.empty()) m_guard_error = what;
+    throw GuardAbort();
 }
 
-void BoundedArchive::guardCounts(const std::string& class_name, int version) {
+void BoundedArchive::watch(const std::uint8_t* data, std::size_t len) {
+    static constexpr std::size_t kShortest = 13, kLongest = 120;  // "CSensoryFrame"; MRPT's maximum
+    if (len >= kShortest && len <= kLongest) {
+        const bool new_format = m_last_len == 1 && (m_last_byte & 0x80) && (m_last_byte & 0x7fu) == len;
+        const bool old_format = m_last_len == 3 && m_last_zeros && m_prev_len == 1 && m_prev_byte == len;
+        if (new_format || old_format) {
+            // MRPT copies the name as a C string: a NUL inside the declared length ends it.
+            const auto* c = reinterpret_cast<const char*>(data);
+            const std::string name(c, ::strnlen(c, len));
+            for (const char* cls :
+                 {"CActionCollection", "CSensoryFrame", "CActionRobotMovement2D", "CObservation2DRangeScan"})
+                if (resolvesTo(name, cls)) onHeader(cls, old_format, len + (old_format ? 4 : 1));
+        }
+    }
+    m_prev_len = m_last_len;
+    m_prev_byte = m_last_byte;
+    m_last_len = len;
+    m_last_byte = len > 0 ? data[0] : 0;
+    m_last_zeros = len == 3 && data[0] == 0 && data[1] == 0 && data[2] == 0;
+}
+
+void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size_t header_bytes) {
+    // Called as MRPT has just read the class name: the version and the object's data follow.
+    const std::uint64_t at = bytesRead() - header_bytes - m_entry_start;
+    const std::string where = m_description + ": the " + cls + " " + std::to_string(at) + " bytes into the entry";
+    const std::size_t vbytes = old_format ? 4 : 1;
+    const auto& b = peek(cls == "CActionRobotMovement2D" ? vbytes + kMovementPeekBytes : vbytes + 12 + 4);
+    if (b.size() < vbytes) return;  // cut by the end of the file: MRPT's reader says so
+    const std::uint32_t version = old_format ? u32At(b, 0) : b[0];
+    if (cls == "CActionRobotMovement2D") {
+        if (version < 4 || version > 7) return;
+        try {
+            m_entry_particles += checkRobotMovement2D(b, vbytes, where);
+        } catch (const std::invalid_argument& e) {
+            fail(e.what());
+        }
+        if (m_entry_particles > kMaxThrunParticles)
+            fail(where + ": the robot movements of one entry ask for " + std::to_string(m_entry_particles) +
+                 " Thrun motion-model particles together (at most " + std::to_string(kMaxThrunParticles) +
+                 "; corrupted file)");
+        return;
+    }
+    if (cls == "CObservation2DRangeScan") {
+        if (version >= 6 && version <= 8) checkRangeScan(vbytes, where);
+        return;
+    }
     // Offset of the u32 element count in the object's data (MRPT 2.5 serializeFrom).
     std::size_t offset = 0;
-    if (class_name == "mrpt::obs::CActionCollection" && version == 0) offset = 0;
-    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 2) offset = 0;
-    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 1) offset = 4;  // + u32 ID
-    else if (class_name == "mrpt::obs::CSensoryFrame" && version == 0) offset = 12;  // + ID, timestamp
+    if (cls == "CActionCollection" && version == 0) offset = 0;
+    else if (cls == "CSensoryFrame" && version <= 2) offset = version == 2 ? 0 : version == 1 ? 4 : 12;  // ID, time
     else return;
-    const auto& bytes = peek(offset + 4);
-    if (bytes.size() < offset + 4) return;  // truncated: MRPT's reader reports the end of file
-    std::uint32_t n = 0;
-    std::memcpy(&n, bytes.data() + offset, 4);  // little endian, as MRPT writes on x86/arm
-    // Each element is an object: name length byte, >= 1 name byte, end flag.
-    constexpr std::uint64_t kMinObjectBytes = 3;
-    if (static_cast<std::uint64_t>(n) * kMinObjectBytes > bytesLeft() - (offset + 4))
-        throw std::invalid_argument(class_name + ": element count " + std::to_string(n) + " needs at least " +
-                                    std::to_string(n * kMinObjectBytes) + " bytes but only " +
-                                    std::to_string(bytesLeft()) + " remain in the file (corrupted or truncated)");
+    if (b.size() < vbytes + offset + 4) return;  // truncated: MRPT's reader reports the end of file
+    const std::uint32_t n = u32At(b, vbytes + offset);
+    const std::uint64_t left = bytesLeft() - (vbytes + offset + 4);
+    if (n * kMinObjectBytes > left)
+        fail(where + ": element count " + std::to_string(n) + " needs at least " +
+             std::to_string(n * kMinObjectBytes) + " bytes but only " + std::to_string(left) +
+             " remain in the file (corrupted or truncated)");
+    if (cls == "CActionCollection" && n > kMaxActionsPerCollection)
+        fail(where + " holds " + std::to_string(n) + " actions (at most " + std::to_string(kMaxActionsPerCollection) +
+             "; corrupted file)");
+    // In a valid entry the containers' elements are distinct objects, so all of them together fit
+    // in the entry's bytes; nested containers claim the same bytes again (a 1.9e9-action collection
+    // inside a collection: 30 GB from 1 895 bytes, found by libFuzzer).
+    m_entry_elements += n;
+    if (m_entry_elements * kMinObjectBytes > m_entry_left)
+        fail(where + " claims " + std::to_string(n) + " elements: with those of the containers before it " +
+             std::to_string(m_entry_elements) + ", more than the " + std::to_string(m_entry_left) +
+             " bytes left in the file at the entry's start can hold (nested containers; corrupted file)");
 }
 
-void BoundedArchive::guardNestedCounts() {
-    // MRPT reads the objects inside an entry with its own ReadObject, which no guard sees: an
-    // action collection or sensory frame stored where an action or observation belongs is
-    // deserialized (and sized from its count) before MRPT notices the wrong class. libFuzzer found
-    // a 1 895-byte rawlog whose nested collection asked for 1.9e9 actions (30 GB). So every header
-    // ahead that MRPT would read as one of them has its count checked: at most 64 actions, and the
-    // elements of all of them together need 3 bytes each of what is left in the file (in a valid
-    // file the containers' elements are disjoint, so they always fit; nested ones claim the same
-    // bytes again). Headers further than the window ahead are checked when their entry is read.
-    const auto& b = peek(kActionScanBytes);
-    std::uint64_t elements = 0;
-    const auto count = [&](const char* cls, std::size_t at) {
-        if (at + 4 > b.size()) return;  // cut by the window or the end of file
-        const std::uint32_t n = u32At(b, at);
-        if (std::string(cls) == "CActionCollection" && n > kMaxActionsPerCollection)
-            throw std::invalid_argument(m_description + ": a nested mrpt::obs::CActionCollection " +
-                                        std::to_string(at) + " bytes into the entry holds " + std::to_string(n) +
-                                        " actions (at most " + std::to_string(kMaxActionsPerCollection) +
-                                        "; corrupted file)");
-        elements += n;
-        constexpr std::uint64_t kMinObjectBytes = 3;  // name length byte, >= 1 name byte, end flag
-        if (elements * kMinObjectBytes > bytesLeft())
-            throw std::invalid_argument(m_description + ": the " + cls + " " + std::to_string(at) +
-                                        " bytes into the entry claims " + std::to_string(n) +
-                                        " elements, more than the " + std::to_string(bytesLeft()) +
-                                        " bytes left in the file can hold next to the containers before it "
-                                        "(corrupted file)");
-    };
-    for (const auto& h : m_collection_headers.headersIn(b, bytesRead()))
-        if (h.version == 0) count("CActionCollection", h.data);
-    for (const auto& h : m_frame_headers.headersIn(b, bytesRead()))
-        if (h.version <= 2) count("CSensoryFrame", h.data + (h.version == 2 ? 0 : h.version == 1 ? 4 : 12));
+void BoundedArchive::checkRangeScan(std::size_t at, const std::string& where) {
+    // MRPT 2.5 CObservation2DRangeScan versions 6-8: aperture (f32), rightToLeft (u8), maxRange (f32),
+    // sensorPose (a CPose3D object), u32 N, then it resizes three vectors to N (9 bytes each: a
+    // 348 KB rawlog with N = 2^26 took 696 MB), N ranges and N validity bytes, stdError (f32),
+    // timestamp (u64), beamAperture (f32), sensorLabel (u32 length, resized before it is read).
+    // Only the CPose3D version 3 MRPT 2.x writes (12 doubles) is located; others are left to MRPT.
+    const auto* b = &peek(at + 9 + 1 + 120 + 1 + 96 + 1 + 4);
+    std::size_t p = at + 9;
+    if (p >= b->size() || !((*b)[p] & 0x80)) return;
+    p += 1 + ((*b)[p] & 0x7f);                                  // the pose's name
+    if (p + 1 + 96 + 1 + 4 > b->size() || (*b)[p] != 3) return;  // version 3, its data, end flag, N
+    p += 1 + 96 + 1;
+    const std::uint32_t n = u32At(*b, p);
+    p += 4;
+    if (std::uint64_t{n} * 5 > bytesLeft() - p)
+        fail(where + ": " + std::to_string(n) + " ranges need " + std::to_string(std::uint64_t{n} * 5) +
+             " bytes but only " + std::to_string(bytesLeft() - p) + " remain in the file (corrupted or truncated)");
+    const std::size_t label_at = p + 5 * std::size_t{n} + 4 + 8 + 4;
+    b = &peek(label_at + 4);
+    if (label_at + 4 > b->size()) return;  // cut by the end of the file: MRPT's reader says so
+    const std::uint32_t label = u32At(*b, label_at);
+    if (label > bytesLeft() - (label_at + 4))
+        fail(where + ": sensor label of " + std::to_string(label) + " bytes, but only " +
+             std::to_string(bytesLeft() - (label_at + 4)) + " remain in the file (corrupted or truncated)");
 }
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded() { return readGuarded(nullptr, 0); }
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded(
+    const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases) {
+    m_entry_start = bytesRead();
+    m_entry_left = bytesLeft();
+    m_entry_elements = m_entry_particles = 0;
+    m_guard_error.clear();
+    m_stack_base = static_cast<const char*>(__builtin_frame_address(0));
+    struct Reset {  // the depth check applies below this call only
+        const char*& p;
+        ~Reset() { p = nullptr; }
+    } reset{m_stack_base};
+    try {
+        return readGuarded(entry_bases, 0);
+    } catch (const std::exception&) {  // GuardAbort, or MRPT's wrapping of an earlier guard error
+        if (!m_guard_error.empty()) throw std::invalid_argument(m_guard_error);
+        throw;
+    }
+}
 
-mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth) {
+mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(
+    const std::vector<const mrpt::rtti::TRuntimeClassId*>& bases, int depth) {
     std::string class_name;
     bool old_format = false;
     int8_t version = -1;
-    internal_ReadObjectHeader(class_name, old_format, version);
-    if (base && class_name == "nullptr")
-        throw std::invalid_argument(m_description + ": a null object where a " + base->className +
-                                    " belongs (corrupted file)");
+    internal_ReadObjectHeader(class_name, old_format, version);  // watch() checks guarded classes
+    std::string wanted;  // "a X or a Y", for the messages
+    for (const auto* b : bases) wanted += (wanted.empty() ? "a " : " or a ") + std::string(b->className);
+    if (!bases.empty() && class_name == "nullptr")
+        throw std::invalid_argument(m_description + ": a null object where " + wanted + " belongs (corrupted file)");
     mrpt::serialization::CSerializable::Ptr obj;
     if (class_name != "nullptr") {
         const auto* id = mrpt::rtti::findRegisteredClass(class_name);
         if (!id) throw std::runtime_error("Stored object has class '" + class_name + "' which is not registered!");
-        if (base && !id->derivedFrom(base))
-            throw std::invalid_argument(m_description + ": a '" + class_name + "' where a " + base->className +
+        if (!bases.empty() && std::none_of(bases.begin(), bases.end(), [&](auto* b) { return id->derivedFrom(b); }))
+            throw std::invalid_argument(m_description + ": a '" + class_name + "' where " + wanted +
                                         " belongs (corrupted file)");
-        const std::string cls = id->className;
-        guardCounts(cls, static_cast<std::uint8_t>(version));
-        if (cls == "mrpt::obs::CActionCollection") guardMotionModels();
-        // A robot movement stored as an entry of its own (not in a collection) reaches MRPT's
-        // reader the same way (libFuzzer: the null pose PDF segfault past the collection guard).
-        if (cls == "mrpt::obs::CActionRobotMovement2D" && version >= 4 && version <= 7)
-            checkRobotMovement2D(peek(kActionScanBytes), 0, m_description);
-        if (depth == 0) guardNestedCounts();
         obj = mrpt::ptr_cast<mrpt::serialization::CSerializable>::from(id->createObject());
-        if (cls == "mrpt::obs::CActionCollection" && version == 0) {
+        if (std::string(id->className) == "mrpt::obs::CActionCollection" && version == 0) {
             // Read here, not by MRPT 2.5's CActionCollection::serializeFrom: that one casts each
             // stored object to CAction and dereferences the result unchecked, so a null object or
             // any other class there (libFuzzer: a CPose2D) is a segfault. Each action's class is
             // checked from its header before it is created.
             auto& actions = dynamic_cast<mrpt::obs::CActionCollection&>(*obj);
-            const auto n = ReadAs<std::uint32_t>();  // bounded by guardCounts / guardMotionModels
+            const auto n = ReadAs<std::uint32_t>();  // bounded by onHeader()
             for (std::uint32_t i = 0; i < n; ++i) {
                 const auto a = std::dynamic_pointer_cast<mrpt::obs::CAction>(
-                    readGuarded(&mrpt::obs::CAction::GetRuntimeClassIdStatic(), depth + 1));
+                    readGuarded({&mrpt::obs::CAction::GetRuntimeClassIdStatic()}, depth + 1));
                 actions.insertPtr(a);
             }
             if (!old_format && ReadAs<std::uint8_t>() != 0x88)  // MRPT's SERIALIZATION_END_FLAG
@@ -264,6 +341,13 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(const mrpt::
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);
     return obj;
+}
+
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses() {
+    static const std::vector<const mrpt::rtti::TRuntimeClassId*> classes{
+        &mrpt::obs::CSensoryFrame::GetRuntimeClassIdStatic(), &mrpt::obs::CActionCollection::GetRuntimeClassIdStatic(),
+        &mrpt::obs::CObservation::GetRuntimeClassIdStatic()};
+    return classes;
 }
 
 std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive) {

@@ -92,7 +92,7 @@ std::vector<RawlogFrame> readRawlog(mrpt::io::CStream& in, std::uint64_t size_by
         if (archive.bytesLeft() == 0) break;  // clean end between objects
         mrpt::serialization::CSerializable::Ptr obj;
         try {
-            obj = archive.readObjectGuarded();
+            obj = archive.readObjectGuarded(rawlogEntryClasses());
         } catch (const mrpt::serialization::CExceptionEOF& e) {
             r.fail(entry, std::string("file ends in the middle of an object (truncated): ") + e.what());
         } catch (const std::bad_alloc&) {

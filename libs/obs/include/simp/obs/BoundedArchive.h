@@ -7,7 +7,6 @@
 
 #include <mrpt/io/CStream.h>
 #include <mrpt/serialization/CArchive.h>
-#include <simp/obs/HeaderScanner.h>
 
 #include <cstdint>
 #include <optional>
@@ -30,33 +29,46 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     std::uint64_t bytesRead() const { return m_fetched - (m_peeked.size() - m_peek_pos); }
     std::string getArchiveDescription() const override { return m_description; }
 
-    /// Like CArchive::ReadObject(), but first checks the element counts that MRPT's own readers
-    /// of CSensoryFrame and CActionCollection resize their vectors to (MRPT 2.5 allocates
-    /// 16 bytes per claimed element before reading one: 64 GB from a 4-byte count) against the
-    /// bytes left, and the motion models of the robot movements of an action collection (MRPT draws
-    /// a Thrun model's particles, as many as the file says, while reading it).
-    /// \throw std::invalid_argument naming the class and the count.
-    mrpt::serialization::CSerializable::Ptr readObjectGuarded();
+    /// Like CArchive::ReadObject(), with the guards below on every object the entry holds, however
+    /// deeply nested, and nesting bounded (kMaxNestingStackBytes of stack: MRPT's readers recurse).
+    /// `entry_bases` (if any): the entry must derive from one of them, checked from its header before
+    /// MRPT creates and reads it (a rawlog entry is a frame, an action collection or an observation;
+    /// libFuzzer: a 677-byte rawlog whose entry is an `mrpt::img::TCamera` with a camera-name length
+    /// of 2^32-1 took 4.3 GB in MRPT's string reader).
+    /// \throw std::invalid_argument naming the class, the field and where in the entry it is.
+    mrpt::serialization::CSerializable::Ptr readObjectGuarded(
+        const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases = {});
 
    protected:
     size_t write(const void* buf, size_t len) override;  ///< always throws: read only
+    /// Every byte MRPT reads passes here, at any nesting depth: this is where object headers are
+    /// recognised (watch()) and the recursion depth is bounded.
     size_t read(void* buf, size_t len) override;
 
    private:
     /// Makes the next `n` bytes (fewer at the end) available without consuming them.
     const std::vector<std::uint8_t>& peek(std::size_t n);
-    void guardCounts(const std::string& class_name, int version);
-    /// The robot movements of an action collection about to be read: a Thrun motion model asking
-    /// for more than 1e5 particles (MRPT would allocate them all) or an unknown model is an error.
-    void guardMotionModels();
-    /// Action collections and sensory frames nested inside the entry about to be read (MRPT reads
-    /// them through its own ReadObject, sized from their counts, before checking their class):
-    /// their counts are checked against the bytes left (64 KB ahead are looked at).
-    void guardNestedCounts();
-    /// readObjectGuarded() for an object that must derive from `base` (nullptr: any class), checked
+    /// Called after each read: when the reads so far are MRPT's internal_ReadObjectHeader reading
+    /// the name of an action collection, sensory frame or robot movement (read(1) of 0x80|length,
+    /// then read(length); or the old format read(1), read(3) zeros, read(length)), onHeader()
+    /// checks the object before MRPT creates it, wherever it is nested (issue #14: a header more
+    /// than the 64 KB a scan ahead covered was not checked).
+    void watch(const std::uint8_t* data, std::size_t len);
+    /// MRPT 2.5 resizes a collection / frame to the count in the file (16 bytes per claimed
+    /// element) and a Thrun motion model draws as many particles as the file says, all before
+    /// anything is checked: counts against the bytes left (each alone, and all containers of the
+    /// entry together, since nested ones claim the same bytes again), at most 64 actions per
+    /// collection, at most 1e5 Thrun particles per entry, known motion models.
+    void onHeader(const std::string& cls, bool old_format, std::size_t header_bytes);
+    /// The scan size and sensor-label length of an MRPT 2D range scan (the one MRPT observation the
+    /// project writes, `simp-sim --lidar`) whose data starts `at` bytes into the bytes ahead.
+    void checkRangeScan(std::size_t at, const std::string& where);
+    [[noreturn]] void fail(const std::string& what);
+    /// readObjectGuarded() for an object that must derive from one of `bases` (empty: any class), checked
     /// from its header before it is created; action collections are read here (MRPT 2.5's reader
     /// dereferences a non-CAction element unchecked). `depth`: nesting level (0: a file entry).
-    mrpt::serialization::CSerializable::Ptr readGuarded(const mrpt::rtti::TRuntimeClassId* base, int depth);
+    mrpt::serialization::CSerializable::Ptr readGuarded(const std::vector<const mrpt::rtti::TRuntimeClassId*>& bases,
+                                                        int depth);
 
     mrpt::io::CStream& m_in;
     std::uint64_t m_size;
@@ -64,16 +76,31 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     std::vector<std::uint8_t> m_peeked;   ///< fetched, not yet delivered from m_peek_pos on
     std::size_t m_peek_pos = 0;
     std::string m_description;
-    /// The headers the guards look for in the bytes ahead, each window scanned once.
-    HeaderScanner m_movement_headers{"CActionRobotMovement2D"};
-    HeaderScanner m_collection_headers{"CActionCollection"};
-    HeaderScanner m_frame_headers{"CSensoryFrame"};
+    // The last two reads, for watch(): their sizes, the byte of a 1-byte read, whether a 3-byte one was zeros.
+    std::size_t m_last_len = 0, m_prev_len = 0;
+    std::uint8_t m_last_byte = 0, m_prev_byte = 0;
+    bool m_last_zeros = false;
+    // The entry being read (readObjectGuarded): where it starts, the bytes left then, what its
+    // containers and motion models claimed so far, the first guard error (MRPT wraps exceptions
+    // thrown inside its readers; this one is what the caller sees), the frame address of its start.
+    std::uint64_t m_entry_start = 0, m_entry_left = 0, m_entry_elements = 0, m_entry_particles = 0;
+    std::string m_guard_error;
+    const char* m_stack_base = nullptr;
 };
+
+/// MRPT resolves a stored class name ignoring its namespace (findRegisteredClass's
+/// allow_ignore_namespace, for pre-2.0 datasets): "x::CPose2D" and "CPose2D" both read as
+/// mrpt::poses::CPose2D. A guard must match names the same way (a fuzzed "m,pt::obs::..." got past
+/// an exact match and drew 19.7 million Thrun particles).
+bool resolvesTo(const std::string& stored, const std::string& cls);
 
 /// The bytes `archive` can still deliver when it knows them (a BoundedArchive); nullopt for
 /// other archives (e.g. MRPT's tools reading through the plugin), whose readers then rely on
 /// the fixed maxima of InputLimits.h alone.
 std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive);
+
+/// The classes a rawlog entry may have: CSensoryFrame, CActionCollection, CObservation (and derived).
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses();
 
 /// Uncompressed size (bytes) of a plain or gzip-compressed file: the file size, or for a gzip
 /// file one streaming decompression pass (constant memory). \throw std::runtime_error naming
