@@ -5,7 +5,8 @@ plus what the localization state is worth:
   - localized_ok: fraction of steps in state 'localized' whose error is <= 0.3 m and pi/4 rad;
   - kidnap: time from the kidnap (Q/kidnap.json) to the first 'lost' step and to the first
     'localized' step after it whose error is within the bounds.
-Standard library only. Usage: analyze_runs.py runs.tsv [--json]"""
+  - with --runs, one row per run: success, convergence, ATE and the share of steps within the bounds.
+Standard library only. Usage: analyze_runs.py runs.tsv [--json] [--runs]"""
 import csv, json, math, os, subprocess, sys
 from collections import defaultdict
 
@@ -56,11 +57,14 @@ def main():
             kidnap_t = json.load(open(kj))['t_s']
         t0 = float(steps[0]['time_s'])
         lost_at = reloc_at = None
+        n_err = n_within = 0
         for s in steps:
             t = float(s['time_s'])
             e = err(gt, t, float(s['est_x_m']), float(s['est_y_m']), float(s['est_phi_rad']))
             if e is None: continue
             within = e[0] <= 0.3 and e[1] <= math.pi / 4
+            n_err += 1
+            n_within += within
             if s['state'] == 'localized':
                 loc[group][0] += 1
                 loc[group][1] += within
@@ -73,10 +77,21 @@ def main():
         m['kidnap_lost_s'] = lost_at
         m['kidnap_relocalized_s'] = reloc_at
         m['run'] = run
+        m['within_share'] = n_within / max(1, n_err)
         groups[group].append(m)
         if kidnap_t is not None:
             kid[group.split('/')[0]].append((lost_at, reloc_at))
     out = {}
+    if '--runs' in sys.argv:
+        print('| run | success | conv s | ATE m | ATE rad | steps within bounds |')
+        print('|---|---|---:|---:|---:|---:|')
+        for g, ms in sorted(groups.items()):
+            for m in ms:
+                num = lambda k, fmt: fmt % m[k] if m.get(k) is not None else '-'
+                conv = num('convergence_time_s', '%.1f') if m.get('converged') else '-'
+                print(f"| {os.path.basename(m['run'])} | {'yes' if m.get('success') else 'no'} | {conv} | "
+                      f"{num('ate_trans_m', '%.3f')} | {num('ate_rot_rad', '%.3f')} | {100 * m['within_share']:.0f} % |")
+        print()
     print('| group | runs | success | ATE m | ATE rad | median conv s | localized steps within bounds |')
     print('|---|---:|---:|---:|---:|---:|---:|')
     for g, ms in sorted(groups.items()):

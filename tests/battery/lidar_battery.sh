@@ -1,66 +1,58 @@
 #!/usr/bin/env bash
-# LiDAR in localization (doc/lidar.md "Results"): on the built-in office with seeds $WORLD_SEEDS (and the
-# authors' office when AUTHORS_DIR exists), one sequence per world with $CHANGES changed objects,
-# $DURATION s, 4 cameras and the simulated LiDAR (--lidar); each localized globally with every
-# method of $METHODS (config_ini/simp.ini, 5000 particles, seed 1) and scored with simp-eval traj.
-# Runs one process at a time. Prints one TSV row per run and a summary per method.
+# LiDAR in localization (doc/lidar.md "Results"): the built-in office with seeds $WORLD_SEEDS and the
+# authors' office (imported; skipped when $AUTHORS is absent); per world, sequences with seeds $SEQ_SEEDS,
+# $CHANGES changed objects, $DURATION s, the simulated LiDAR (--lidar) and $CAMERAS cameras (a copy of
+# config_ini/sim.ini with [cameras] count changed; 4 = the shipped rig); each localized globally with every
+# method of $METHODS ($CONFIG, $PARTICLES particles, seed 1). Scored by tests/battery/analyze_runs.py
+# (simp-eval traj), grouped as method/cameras; --runs prints one row per run.
+# Runs $JOBS processes at once. Same inputs, same output.
 #   bash tests/battery/lidar_battery.sh OUT
 set -euo pipefail
 OUT=${1:?usage: lidar_battery.sh OUT}
 B=${B:-build/bin}
 WORLD_SEEDS=${WORLD_SEEDS:-"21 22 23 24 25 26"}
-METHODS=${METHODS:-"simp+lidar lidar simp"}
+SEQ_SEEDS=${SEQ_SEEDS:-"1"}
+METHODS=${METHODS:-"simp+lidar lidar"}
 CHANGES=${CHANGES:-0.3}
 DURATION=${DURATION:-120}
-SEQ_SEED=${SEQ_SEED:-1}
-AUTHORS_DIR=${AUTHORS_DIR:-../shared/data/simp-office}
+CAMERAS=${CAMERAS:-4}
+PARTICLES=${PARTICLES:-5000}
+JOBS=${JOBS:-2}
+AUTHORS=${AUTHORS:-../shared/data/simp-office}
 CONFIG=${CONFIG:-config_ini/simp.ini}
+TAG=${TAG:-$(basename "$CONFIG" .ini)}
 mkdir -p "$OUT"
 worlds=()
 for ws in $WORLD_SEEDS; do
   [ -d "$OUT/w_office$ws" ] || "$B/simp-sim" world --builtin office --seed "$ws" --out "$OUT/w_office$ws" >/dev/null
   worlds+=("office$ws")
 done
-if [ -d "$AUTHORS_DIR" ]; then
-  [ -d "$OUT/w_authors" ] || "$B/simp-import-map" --simp-dir "$AUTHORS_DIR" --out "$OUT/w_authors" >/dev/null
+if [ -d "$AUTHORS" ]; then
+  [ -d "$OUT/w_authors" ] || "$B/simp-import-map" --simp-dir "$AUTHORS" --out "$OUT/w_authors" >/dev/null
   worlds+=(authors)
+else
+  echo "battery: $AUTHORS not found, the authors' office is skipped" >&2
 fi
-runs="$OUT/runs.tsv"
-printf "world\tmethod\tsuccess\tconverged_s\tate_m\tate_rad\tseconds\n" > "$runs"
+simcfg="$OUT/sim_cam$CAMERAS.ini"
+sed "/^\[cameras\]/,/^\[/ s/^count = .*/count = $CAMERAS/" config_ini/sim.ini > "$simcfg"
+grep -q "^count = $CAMERAS\$" "$simcfg" || { echo "battery: could not set [cameras] count in $simcfg" >&2; exit 1; }
+
+sim_jobs="$OUT/sim_jobs.txt"; : > "$sim_jobs"
+jobs_file="$OUT/jobs_$TAG.txt"; : > "$jobs_file"
+runs_file="$OUT/runs_$TAG.tsv"; : > "$runs_file"
 for w in "${worlds[@]}"; do
-  W="$OUT/w_$w"; Q="$OUT/q_$w"
-  [ -f "$Q/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$W" --seed "$SEQ_SEED" --out "$Q" --duration "$DURATION" \
-    --changes "$CHANGES" --lidar >/dev/null 2>&1
-  for m in $METHODS; do
-    O="$OUT/o_${w}_${m}"
-    t0=$(date +%s.%N)
-    "$B/simp-localize" --world "$W" --rawlog "$Q/sequence.rawlog" --out "$O" --config "$CONFIG" --method "$m" \
-      --seed 1 --quiet >/dev/null 2>&1
-    t1=$(date +%s.%N)
-    json=$("$B/simp-eval" traj --gt "$Q/groundtruth.tum" --est "$O/estimate.tum" --json 2>/dev/null | tail -1 || echo '{}')
-    python3 - "$w" "$m" "$json" "$t0" "$t1" >> "$runs" <<'PY'
-import json, sys
-w, m, j, t0, t1 = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5])
-try:
-    d = json.loads(j)
-except ValueError:
-    d = {}
-f = lambda k, fmt: (fmt % d[k]) if d.get(k) is not None else "-"
-print("\t".join([w, m, str(d.get("success", False)).lower(), f("convergence_time_s", "%.1f"), f("ate_trans_m", "%.3f"),
-                 f("ate_rot_rad", "%.3f"), "%.0f" % (t1 - t0)]))
-PY
-    tail -1 "$runs"
+  for s in $SEQ_SEEDS; do
+    Q="$OUT/q_${w}_cam${CAMERAS}_s$s"
+    [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $OUT/w_$w --seed $s --out $Q --config $simcfg --duration $DURATION --changes $CHANGES --lidar >/dev/null 2>&1" >> "$sim_jobs"
+    for m in $METHODS; do
+      O="$OUT/r_${TAG}_${m}_$(basename "$Q")"
+      echo "$B/simp-localize --world $OUT/w_$w --rawlog $Q/sequence.rawlog --out $O --config $CONFIG --method '$m' --particles $PARTICLES --seed 1 --quiet >/dev/null 2>&1" >> "$jobs_file"
+      printf '%s\t%s\t%s\n' "$O" "$Q" "$TAG/$m/cam$CAMERAS" >> "$runs_file"
+    done
   done
 done
-python3 - "$runs" <<'PY'
-import csv, sys
-rows = list(csv.DictReader(open(sys.argv[1]), delimiter="\t"))
-for m in dict.fromkeys(r["method"] for r in rows):
-    rs = [r for r in rows if r["method"] == m]
-    ok = [r for r in rs if r["success"] == "true"]
-    ates = [float(r["ate_m"]) for r in ok if r["ate_m"] != "-"]
-    conv = [float(r["converged_s"]) for r in ok if r["converged_s"] != "-"]
-    print("%-11s success %d/%d, mean ATE of successes %s m, mean convergence %s s" % (
-        m, len(ok), len(rs), "%.3f" % (sum(ates) / len(ates)) if ates else "-",
-        "%.1f" % (sum(conv) / len(conv)) if conv else "-"))
-PY
+xargs -P "$JOBS" -I{} sh -c '{}' < "$sim_jobs"
+start=$(date +%s)
+xargs -P "$JOBS" -I{} sh -c '{}' < "$jobs_file"
+echo "battery: $(wc -l < "$jobs_file") runs in $(( $(date +%s) - start )) s" >&2
+SIMP_EVAL="$B/simp-eval" python3 tests/battery/analyze_runs.py "$runs_file" --runs

@@ -157,6 +157,7 @@ void expectSame(const LidarModelOptions& a, const LidarModelOptions& b) {
     SIMP_EXPECT_SAME(z_random);
     SIMP_EXPECT_SAME(max_range_m);
     SIMP_EXPECT_SAME(max_corr_distance_m);
+    SIMP_EXPECT_SAME(map_objects);
 }
 
 void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b) {

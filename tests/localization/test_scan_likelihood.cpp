@@ -100,6 +100,42 @@ TEST(ScanLikelihood, FusionPrefersTheTruePoseWhereEachSourceAloneIsAmbiguous) {
     EXPECT_GT(fused_A, scan_log[2] + obj_log[2] + 5.0);
 }
 
+TEST(ScanLikelihood, MapObjectsSpanningTheScanPlaneExplainTheirReturns) {
+    // A cabinet row along the right wall (0.6 m deep, 1.8 m tall), a board above the scan plane, a door.
+    auto w = symmetricRoom();
+    auto& m = w.objects;
+    const auto add = [&](const char* cls, Eigen::Vector3d centre, Eigen::Vector3d size) {
+        simp::world::MapObject o;
+        o.id = static_cast<std::int64_t>(m.objects.size() + 1);
+        o.class_id = simp::obs::classIndexOf(m.class_names, cls);
+        o.box = simp::geometry::makeUprightBox(centre, size, 0.0);
+        m.objects.push_back(o);
+    };
+    add("cabinet", {9.7, 3.0, 0.9}, {0.6, 4.0, 1.8});
+    add("board", {0.05, 3.0, 1.5}, {0.1, 2.0, 1.0});  // 1.0-2.0 m: above the 0.3 m plane
+    add("door", {5.0, 6.0, 1.0}, {0.9, 0.05, 2.0});   // an open leaf: never an obstacle
+    const mrpt::math::TPose2D truth{3.0, 2.5, 0.2};
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.01;
+    simp::sim::LidarSimulator lidar(w, p);  // sees the three cabinets
+    simp::sim::Rng rng(5);
+    const auto scan = lidar.scan(truth, {}, 0.0, rng);
+    LidarModelOptions o;
+    o.weight = 1.0;
+    o.sigma_m = 0.15;
+    o.max_corr_distance_m = 0.3;
+    ScanLikelihood plain(w.floorplan, o), with_objects(w.floorplan, o, &w.objects);
+    const std::vector<mrpt::math::TPose2D> poses{truth, {3.15, 2.5, 0.2}, {2.85, 2.5, 0.2}, {3.0, 2.65, 0.2}, {3.0, 2.5, 0.3}};
+    std::vector<double> lp(poses.size()), lo(poses.size());
+    plain.logLikelihoods(scan, poses.data(), poses.size(), lp.data());
+    with_objects.logLikelihoods(scan, poses.data(), poses.size(), lo.data());
+    EXPECT_EQ(plain.objectsInGrid(), 0u);
+    EXPECT_EQ(with_objects.objectsInGrid(), 3u);  // the two cabinets of the room and the row; no board, no door
+    // the returns of the furniture are explained: the true pose scores much higher with the objects
+    EXPECT_GT(lo[0], lp[0] + 10.0) << lo[0] << " vs " << lp[0];
+    for (std::size_t i = 1; i < poses.size(); ++i) EXPECT_GT(lo[0], lo[i] + 2.0) << "pose " << i;
+}
+
 TEST(ScanLikelihood, BadOptionsNameTheKey) {
     const simp::io::StrictIni ini("[LidarModel]\nsigma_m = -1\n", "x.ini");
     LidarModelOptions o;

@@ -216,8 +216,13 @@ void LocalizeApp::run() {
     // second value across randomize(), so a run would depend on the draws of the one before it.
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(experiment.seed);
     Localizer localizer(map, world.floorplan, options);
-    if (with_scans)
-        localizer.setScanModel(std::make_shared<ScanLikelihood>(world.floorplan, options.lidar), model_name == "simp+lidar");
+    if (with_scans) {
+        const bool fused = model_name == "simp+lidar";
+        const bool objects_in_scan = fused && options.lidar.map_objects;
+        localizer.setScanModel(
+            std::make_shared<ScanLikelihood>(world.floorplan, options.lidar, objects_in_scan ? &world.objects : nullptr),
+            fused);
+    }
     if (initial_pose) {
         const auto& p = *initial_pose;
         try {

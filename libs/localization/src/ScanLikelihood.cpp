@@ -1,6 +1,7 @@
 #include <simp/localization/ScanLikelihood.h>
 
 #include <mrpt/poses/CPose3D.h>
+#include <simp/world/ScanPlane.h>
 
 #include <cmath>
 #include <stdexcept>
@@ -15,6 +16,7 @@ void LidarModelOptions::loadFromConfig(const mrpt::config::CConfigFileBase& cfg,
     z_random = cfg.read_double(s, "z_random", z_random);
     max_range_m = cfg.read_double(s, "max_range_m", max_range_m);
     max_corr_distance_m = cfg.read_double(s, "max_corr_distance_m", max_corr_distance_m);
+    map_objects = cfg.read_bool(s, "map_objects", map_objects);
     const auto check = [&](bool ok, const std::string& key, const std::string& what) {
         if (!ok) throw std::invalid_argument("[" + s + "] " + key + " " + what);
     };
@@ -27,8 +29,17 @@ void LidarModelOptions::loadFromConfig(const mrpt::config::CConfigFileBase& cfg,
     check(max_corr_distance_m > 0 && max_corr_distance_m <= 100, "max_corr_distance_m", "must be in (0, 100]");
 }
 
-ScanLikelihood::ScanLikelihood(const mrpt::maps::COccupancyGridMap2D& floorplan, const LidarModelOptions& options)
-    : m_opts(options), m_grid(std::make_unique<mrpt::maps::COccupancyGridMap2D>(floorplan)) {
+ScanLikelihood::ScanLikelihood(const mrpt::maps::COccupancyGridMap2D& floorplan, const LidarModelOptions& options,
+                               const world::ObjectMapData* objects)
+    : m_opts(options), m_floorplan(floorplan) {
+    if (objects) m_objects = *objects;
+}
+
+mrpt::maps::COccupancyGridMap2D& ScanLikelihood::gridAt(double height_m) const {
+    if (m_grid && (!m_objects || height_m == m_grid_height_m)) return *m_grid;
+    m_grid = std::make_unique<mrpt::maps::COccupancyGridMap2D>(m_floorplan);
+    m_grid_height_m = height_m;
+    m_objects_drawn = m_objects ? world::drawObjectsAtHeight(*m_grid, *m_objects, height_m) : 0;
     auto& o = m_grid->likelihoodOptions;
     o.likelihoodMethod = mrpt::maps::COccupancyGridMap2D::lmLikelihoodField_Thrun;
     o.LF_decimation = static_cast<std::uint32_t>(m_opts.decimation);
@@ -39,13 +50,15 @@ ScanLikelihood::ScanLikelihood(const mrpt::maps::COccupancyGridMap2D& floorplan,
     o.LF_maxCorrsDistance = static_cast<float>(m_opts.max_corr_distance_m);
     o.LF_useSquareDist = false;
     o.enableLikelihoodCache = true;
+    return *m_grid;
 }
 
 void ScanLikelihood::logLikelihoods(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D* poses,
                                     std::size_t n, double* out_log) const {
+    auto& grid = gridAt(scan.sensorPose.z());
     for (std::size_t i = 0; i < n; ++i) {
         const mrpt::poses::CPose3D pose(poses[i].x, poses[i].y, 0.0, poses[i].phi, 0.0, 0.0);
-        const double l = m_grid->computeObservationLikelihood(scan, pose);
+        const double l = grid.computeObservationLikelihood(scan, pose);
         if (!std::isfinite(l))
             throw std::runtime_error("LiDAR likelihood: non-finite value for pose (" + std::to_string(poses[i].x) + ", " +
                                      std::to_string(poses[i].y) + ", " + std::to_string(poses[i].phi) + ")");

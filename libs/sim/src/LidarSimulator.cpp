@@ -1,4 +1,3 @@
-#include <simp/geometry/Footprint.h>
 #include <simp/sim/LidarSimulator.h>
 
 #include <mrpt/core/Clock.h>
@@ -7,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace simp::sim {
 namespace {
@@ -19,44 +17,9 @@ constexpr float kHitThreshold = 0.6f;
 
 }  // namespace
 
-std::vector<std::pair<int, int>> footprintCells(const mrpt::maps::COccupancyGridMap2D& grid, const geometry::Box3D& box) {
-    std::vector<std::pair<int, int>> cells;
-    const auto fp = geometry::footprint(box);
-    if (fp.n < 3) return cells;
-    Eigen::Vector2d lo, hi;
-    fp.bounds(lo, hi);
-    const int nx = static_cast<int>(grid.getSizeX()), ny = static_cast<int>(grid.getSizeY());
-    const int cx0 = std::max(0, grid.x2idx(lo.x())), cx1 = std::min(nx - 1, grid.x2idx(hi.x()));
-    const int cy0 = std::max(0, grid.y2idx(lo.y())), cy1 = std::min(ny - 1, grid.y2idx(hi.y()));
-    for (int cy = cy0; cy <= cy1; ++cy)
-        for (int cx = cx0; cx <= cx1; ++cx) {
-            const Eigen::Vector2d c(grid.idx2x(static_cast<std::size_t>(cx)), grid.idx2y(static_cast<std::size_t>(cy)));
-            bool in = true;
-            for (std::size_t i = 0; i < fp.n && in; ++i) {
-                const Eigen::Vector2d e = fp.v[(i + 1) % fp.n] - fp.v[i], d = c - fp.v[i];
-                in = e.x() * d.y() - e.y() * d.x() >= 0;  // counter-clockwise: inside is left
-            }
-            if (in) cells.emplace_back(cx, cy);
-        }
-    return cells;
-}
-
-bool spansHeight(const geometry::Box3D& box, double height_m) {
-    double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
-    for (const auto& c : box.corners()) {
-        z_lo = std::min(z_lo, c.z());
-        z_hi = std::max(z_hi, c.z());
-    }
-    return z_lo <= height_m && height_m <= z_hi;
-}
-
 LidarSimulator::LidarSimulator(const world::World& world, const LidarParams& params)
     : m_params(params), m_grid(world.floorplan) {
-    const int door_class = world.objects.classId("door");
-    for (const auto& o : world.objects.objects) {
-        if (o.class_id == door_class || !spansHeight(o.box, params.height_m)) continue;
-        for (const auto& [cx, cy] : footprintCells(m_grid, o.box)) m_grid.setCell(cx, cy, kOccupied);
-    }
+    world::drawObjectsAtHeight(m_grid, world.objects, params.height_m);
 }
 
 mrpt::obs::CObservation2DRangeScan LidarSimulator::scan(const mrpt::math::TPose2D& robot_pose,
@@ -65,8 +28,8 @@ mrpt::obs::CObservation2DRangeScan LidarSimulator::scan(const mrpt::math::TPose2
     // people (and other moving things) go into the grid for this scan only
     std::vector<std::pair<std::pair<int, int>, float>> saved;
     for (const auto& o : dynamic_obstacles) {
-        if (!spansHeight(o.box, m_params.height_m)) continue;
-        for (const auto& c : footprintCells(m_grid, o.box)) {
+        if (!world::spansHeight(o.box, m_params.height_m)) continue;
+        for (const auto& c : world::footprintCells(m_grid, o.box)) {
             saved.push_back({c, m_grid.getCell(c.first, c.second)});
             m_grid.setCell(c.first, c.second, kOccupied);
         }

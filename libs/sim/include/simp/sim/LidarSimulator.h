@@ -10,18 +10,13 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <simp/sim/Random.h>
 #include <simp/sim/SensorParams.h>
+#include <simp/world/ScanPlane.h>
 #include <simp/world/World.h>
 
 #include <utility>
 #include <vector>
 
 namespace simp::sim {
-
-/// Cells (cx, cy) of `grid` whose centre lies inside the ground footprint of `box`.
-std::vector<std::pair<int, int>> footprintCells(const mrpt::maps::COccupancyGridMap2D& grid, const geometry::Box3D& box);
-
-/// True when the box's vertical extent contains height_m (the scan plane hits it).
-bool spansHeight(const geometry::Box3D& box, double height_m);
 
 class LidarSimulator {
    public:
