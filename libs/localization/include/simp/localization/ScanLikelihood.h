@@ -9,6 +9,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <simp/io/OptionTable.h>
 
 #include <cstddef>
 #include <memory>
@@ -29,6 +30,8 @@ struct LidarModelOptions {
     double max_range_m = 15.0;   ///< beams beyond are not weighed (m), LF_maxRange
     double max_corr_distance_m = 0.6;  ///< distance to the nearest wall is capped here (m), LF_maxCorrsDistance
 
+    /// The declaration of every key (section [LidarModel]).
+    static const io::OptionTable<LidarModelOptions>& table();
     /// Reads [section]; absent keys keep the defaults. \throw std::invalid_argument naming section and key.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section = "LidarModel");
 };
