@@ -92,3 +92,74 @@ TEST(OptionTable, DumpReadsBackAndDocumentsEveryKey) {
               "| `count` | 10 |  | >= 3 | how many |\n"
               "| `mode` | `fast` |  | 'fast' or 'exact' | the mode |\n");
 }
+
+namespace {
+
+enum class Mode { Slow, Fast };
+struct Inner {
+    float gain = 0.5f;
+};
+struct Rig {
+    bool enabled = true;
+    std::size_t particles = 100;
+    Mode mode = Mode::Slow;
+    Inner inner;
+    std::string names = "a";
+    double lo = 1, hi = 2;
+};
+
+const OptionTable<Rig>& rigTable() {
+    static const OptionTable<Rig> t =
+        OptionTable<Rig>("rig")
+            .flag("enabled", &Rig::enabled, "on or off")
+            .integer("particles", &Rig::particles, ValueRange::between(1, 1e6), "how many")
+            .choice("mode", &Rig::mode, std::vector<std::pair<std::string, Mode>>{{"slow", Mode::Slow}, {"fast", Mode::Fast}}, "speed")
+            .number("gain", [](auto& r) -> auto& { return r.inner.gain; }, "", ValueRange::aboveUpTo(0, 1), "a member of a member")
+            .custom(
+                "names", "", "a list", "own syntax: an empty value is allowed",
+                [](Rig& r, const std::string& text, const std::string&) { r.names = text; },
+                [](const Rig& r, int) { return r.names; }, [](const Rig& r) { return r.names.size() < 5; })
+            .number("lo", &Rig::lo, "m", ValueRange::finite(), "lower")
+            .number("hi", &Rig::hi, "m", ValueRange::finite(), "upper")
+            .rule("lo", [](const Rig& r) { return r.lo < r.hi; }, "be smaller than hi");
+    return t;
+}
+
+Rig rigFrom(const std::string& ini) {
+    Rig r;
+    rigTable().load(mrpt::config::CConfigFileMemory(ini), "rig", r);
+    return r;
+}
+
+}  // namespace
+
+TEST(OptionTable, FlagsEnumsMembersOfMembersAndOwnSyntax) {
+    const Rig r = rigFrom("[rig]\nenabled = false\nparticles = 5e3\nmode = fast\ngain = 0.25\nnames =\n");
+    EXPECT_FALSE(r.enabled);
+    EXPECT_EQ(r.particles, 5000u);  // a whole number may be written 5e3, as the localization loaders took it
+    EXPECT_EQ(r.mode, Mode::Fast);
+    EXPECT_FLOAT_EQ(r.inner.gain, 0.25f);
+    EXPECT_EQ(r.names, "");
+    const auto values = rigTable().values(r);
+    ASSERT_EQ(values.size(), 7u);
+    EXPECT_EQ(values[0], (std::pair<std::string, std::string>{"enabled", "false"}));
+    EXPECT_EQ(values[2].second, "fast");
+    EXPECT_EQ(values[3].second, "0.25");
+}
+
+TEST(OptionTable, StrictWhateverTheSourceAndRulesNameTheKey) {
+    // a plain CConfigFileMemory (as MRPT's tools pass) is parsed as strictly as io::StrictIni
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\ngain = 0.5abc\n"); }), "[rig] gain = '0.5abc' is not a finite number");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nparticles = 12.5\n"); }), "[rig] particles = '12.5' is not an integer");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nparticles = -1\n"); }), "[rig] particles = -1 is out of the integer range");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nparticles =\n"); }), "[rig] particles has no value");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nenabled = maybe\n"); }), "[rig] enabled: 'maybe' is not a boolean (true/false)");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nmode = medium\n"); }), "[rig] mode: must be 'slow' or 'fast', got 'medium'");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\ngain = 0\n"); }), "[rig] gain: must be in (0, 1], got 0");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nnames = abcdef\n"); }), "[rig] names: must be a list, got abcdef");
+    EXPECT_EQ(errorOf([] { rigFrom("[rig]\nlo = 3\n"); }), "[rig] lo: must be smaller than hi");
+    // the section named is the one read (a map's options live in [<prefix>_likelihoodOpts])
+    Rig r;
+    EXPECT_EQ(errorOf([&] { rigTable().load(mrpt::config::CConfigFileMemory("[other]\nlo = 3\n"), "other", r); }),
+              "[other] lo: must be smaller than hi");
+}

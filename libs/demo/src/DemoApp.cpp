@@ -6,15 +6,18 @@
 #include <simp/eval/TrajectoryMetrics.h>
 #include <simp/io/StrictIni.h>
 #include <simp/io/CommandLine.h>
+#include <simp/io/OptionTable.h>
 #include <simp/io/Tum.h>
 #include <simp/localization/LocalizeApp.h>
 #include <simp/mapping/MapApp.h>
 #include <simp/mapping/MappingOptions.h>
+#include <simp/maps/SensorModelTypes.h>
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/Trajectory.h>
 #include <simp/world/World.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <limits>
@@ -100,8 +103,10 @@ bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out
     if (auto v = c.integer("particles", 10, kMaxParticles)) options.particles = static_cast<int>(*v);
     if (c.has("method")) {
         options.method = c.value("method");
-        if (options.method != "simp" && options.method != "edt" && options.method != "d" && options.method != "o")
-            throw std::invalid_argument("option --method: '" + options.method + "' is not simp, edt, d or o");
+        // the object models only (the demo's sequences carry no scans): maps::sensorModelTypeNames()
+        const auto& models = maps::sensorModelTypeNames();
+        if (std::find(models.begin(), models.end(), options.method) == models.end())
+            throw std::invalid_argument("option --method: '" + options.method + "' is not " + io::option_text::choices(models));
     }
     if (auto v = c.integer("runs", 1, 10)) {
         options.changes.clear();

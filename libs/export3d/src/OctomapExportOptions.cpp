@@ -5,45 +5,45 @@
 #include <simp/export3d/OctomapExport.h>
 #include <simp/io/StrictIni.h>
 
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
 namespace simp::export3d {
 
-void OctomapExportOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) {
-    MRPT_LOAD_CONFIG_VAR(resolution_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(floor_z_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(ceiling_height_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(mark_free_space, bool, source, section);
-    door_class = source.read_string(section, "door_class", door_class);
-    MRPT_LOAD_CONFIG_VAR(export_open_doors, bool, source, section);
-    MRPT_LOAD_CONFIG_VAR(max_voxels, double, source, section);
-    validate("[" + section + "]");
+const io::OptionTable<OctomapExportOptions>& OctomapExportOptions::table() {
+    using O = OctomapExportOptions;
+    using io::ValueRange;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("octomap")
+            .number("resolution_m", &O::resolution_m, "m", ValueRange::between(kMinResolution_m, kMaxResolution_m), "voxel edge; `--resolution` overrides it")
+            .number("floor_z_m", &O::floor_z_m, "m", ValueRange::between(-100, 100), "floor height (world z)")
+            .number("ceiling_height_m", &O::ceiling_height_m, "m", ValueRange::finite(),
+                    "wall top (world z); above `floor_z_m` by at most 100 m")
+            .flag("mark_free_space", &O::mark_free_space, "free cells -> free voxels up to the ceiling")
+            .custom(
+                "door_class", "", "a class name", "class name of doors",
+                [](O& o, const std::string& text, const std::string&) { o.door_class = text; },
+                [](const O& o, int) { return o.door_class; }, [](const O& o) { return !o.door_class.empty(); })
+            .flag("export_open_doors", &O::export_open_doors, "also export doors standing in an open gap (a free floor-plan cell)")
+            .number("max_voxels", &O::max_voxels, "", ValueRange::between(1, 1e9), "refuse an export whose voxel estimate (known cells x layers + box volumes, before pruning) is larger")
+            .rule("ceiling_height_m",
+                  [](const O& o) { return o.ceiling_height_m > o.floor_z_m && o.ceiling_height_m - o.floor_z_m <= 100; },
+                  "be above floor_z_m by at most 100 m");
+    return t;
 }
 
-void OctomapExportOptions::dumpToTextStream(std::ostream& out) const {
-    out << "\n----------- [simp::export3d::OctomapExportOptions] ------------\n\n";
-    LOADABLEOPTS_DUMP_VAR(resolution_m, double);
-    LOADABLEOPTS_DUMP_VAR(floor_z_m, double);
-    LOADABLEOPTS_DUMP_VAR(ceiling_height_m, double);
-    LOADABLEOPTS_DUMP_VAR(mark_free_space, bool);
-    out << "door_class                              = " << door_class << "\n";
-    LOADABLEOPTS_DUMP_VAR(export_open_doors, bool);
-    LOADABLEOPTS_DUMP_VAR(max_voxels, double);
+void OctomapExportOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) {
+    table().load(source, section, *this);
 }
+
+void OctomapExportOptions::dumpToTextStream(std::ostream& out) const { table().dump(*this, out); }
 
 void OctomapExportOptions::validate(const std::string& where) const {
-    const auto fail = [&](const std::string& what) { throw std::invalid_argument(where + " " + what); };
-    if (!(resolution_m >= kMinResolution_m && resolution_m <= kMaxResolution_m))
-        fail("resolution_m = " + std::to_string(resolution_m) + " must be in [" + std::to_string(kMinResolution_m) +
-             ", " + std::to_string(kMaxResolution_m) + "] m");
-    if (!std::isfinite(floor_z_m) || std::abs(floor_z_m) > 100) fail("floor_z_m must be a finite height within 100 m");
-    if (!(ceiling_height_m > floor_z_m && ceiling_height_m - floor_z_m <= 100))
-        fail("ceiling_height_m = " + std::to_string(ceiling_height_m) + " must be above floor_z_m (" +
-             std::to_string(floor_z_m) + ") by at most 100 m");
-    if (!(max_voxels >= 1 && max_voxels <= 1e9)) fail("max_voxels must be in [1, 1e9]");
-    if (door_class.empty()) fail("door_class must not be empty");
+    try {
+        table().validate(*this);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(where + " " + e.what());
+    }
 }
 
 OctomapExportOptions loadOctomapExportOptions(const std::string& ini_path) {

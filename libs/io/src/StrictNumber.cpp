@@ -18,12 +18,6 @@ std::string trimmed(const std::string& s) {
     return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
 }
 
-std::string shortNumber(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
 }  // namespace
 
 std::optional<double> parseFiniteNumber(const std::string& text) {
@@ -53,7 +47,13 @@ std::optional<std::int64_t> parseWholeInteger(const std::string& text) {
     return static_cast<std::int64_t>(v);
 }
 
-std::string rangeText(double lo, double hi) { return "[" + shortNumber(lo) + ", " + shortNumber(hi) + "]"; }
+std::string numberText(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+std::string rangeText(double lo, double hi) { return "[" + numberText(lo) + ", " + numberText(hi) + "]"; }
 
 double parseNumber(const std::string& text, const std::string& what, double lo, double hi) {
     const auto v = parseFiniteNumber(text);

@@ -2,18 +2,27 @@
 
 namespace simp::lidar {
 
-void IcpPosesOptions::loadFromConfig(const io::StrictIni& cfg, const std::string& s) {
-    scan_decimation = static_cast<int>(cfg.readInteger(s, "scan_decimation", scan_decimation, 1, 1000));
-    max_range_m = cfg.readNumber(s, "max_range_m", max_range_m, 0.1, 1000);
-    max_iterations = static_cast<int>(cfg.readInteger(s, "max_iterations", max_iterations, 1, 10000));
-    threshold_dist_m = cfg.readNumber(s, "threshold_dist_m", threshold_dist_m, 1e-3, 10);
-    threshold_ang_deg = cfg.readNumber(s, "threshold_ang_deg", threshold_ang_deg, 0, 90);
-    alfa = cfg.readNumber(s, "alfa", alfa, 0.01, 0.99);
-    smallest_threshold_dist_m = cfg.readNumber(s, "smallest_threshold_dist_m", smallest_threshold_dist_m, 1e-4, 10);
-    min_points = static_cast<int>(cfg.readInteger(s, "min_points", min_points, 3, 100000));
-    min_goodness = cfg.readNumber(s, "min_goodness", min_goodness, 0, 1);
-    max_correction_m = cfg.readNumber(s, "max_correction_m", max_correction_m, 0, 100);
-    max_correction_deg = cfg.readNumber(s, "max_correction_deg", max_correction_deg, 0, 180);
+const io::OptionTable<IcpPosesOptions>& IcpPosesOptions::table() {
+    using O = IcpPosesOptions;
+    using io::ValueRange;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("ICP")
+            .integer("scan_decimation", &O::scan_decimation, ValueRange::between(1, 1000), "every n-th ray of a scan is aligned")
+            .number("max_range_m", &O::max_range_m, "m", ValueRange::between(0.1, 1000), "rays beyond are left out")
+            .integer("max_iterations", &O::max_iterations, ValueRange::between(1, 10000), "CICP maxIterations")
+            .number("threshold_dist_m", &O::threshold_dist_m, "m", ValueRange::between(1e-3, 10), "initial pairing distance, CICP thresholdDist")
+            .number("threshold_ang_deg", &O::threshold_ang_deg, "deg", ValueRange::between(0, 90),
+                    "pairing distance growing with range, CICP thresholdAng")
+            .number("alfa", &O::alfa, "", ValueRange::between(0.01, 0.99), "CICP ALFA: the thresholds shrink by it on convergence")
+            .number("smallest_threshold_dist_m", &O::smallest_threshold_dist_m, "m", ValueRange::between(1e-4, 10), "CICP smallestThresholdDist")
+            .integer("min_points", &O::min_points, ValueRange::between(3, 100000), "fewer scan points: odometry only at this step")
+            .number("min_goodness", &O::min_goodness, "", ValueRange::between(0, 1), "CICP goodness (share of paired points) below: rejected")
+            .number("max_correction_m", &O::max_correction_m, "m", ValueRange::between(0, 100),
+                    "an alignment moving the odometry prediction farther: rejected")
+            .number("max_correction_deg", &O::max_correction_deg, "deg", ValueRange::between(0, 180), "same for the heading");
+    return t;
 }
+
+void IcpPosesOptions::loadFromConfig(const io::StrictIni& cfg, const std::string& s) { table().load(cfg, s, *this); }
 
 }  // namespace simp::lidar

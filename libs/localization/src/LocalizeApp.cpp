@@ -29,6 +29,14 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
+
+/// sensorModelNames() joined: "simp|edt|..." (sep "|") or "simp, edt, ... or simp+lidar" (sep ", ").
+std::string joinedNames(const std::string& sep) {
+    const auto& n = sensorModelNames();
+    std::string s;
+    for (std::size_t k = 0; k < n.size(); ++k) s += (k == 0 ? "" : sep == ", " && k + 1 == n.size() ? " or " : sep) + n[k];
+    return s;
+}
 /// --particles above this is refused: 5e5 particles already take seconds per update (doc/localization.md).
 constexpr long long kMaxParticles = 500000;
 
@@ -101,7 +109,7 @@ io::CommandLine LocalizeApp::commandLine() {
         .required("rawlog", "RAWLOG", "input rawlog (Q/sequence.rawlog)")
         .required("out", "O", "output directory")
         .option("config", "INI", "MRPT-style .ini (config_ini/simp.ini)")
-        .option("method", "M", "sensor model: simp|edt|d|o|lidar|simp+lidar (overrides the .ini; lidar: the scans against\n"
+        .option("method", "M", "sensor model: " + joinedNames("|") + " (overrides the .ini; lidar: the scans against\n"
                                "the floor plan alone, simp+lidar: times the object model; doc/lidar.md)")
         .option("particles", "N", "particle count, in [1, " + std::to_string(kMaxParticles) + "] (overrides the .ini; default 5000)")
         .option("seed", "S", "random seed, in [0, 2^32) (overrides the .ini; default 0)")
@@ -134,7 +142,7 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     if (a.has("method")) {
         const std::string m = a.value("method");
         if (std::find(sensorModelNames().begin(), sensorModelNames().end(), m) == sensorModelNames().end())
-            throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use simp, edt, d, o, lidar or simp+lidar)");
+            throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use " + joinedNames(", ") + ")");
         options.experiment.sensor_model = m;
     }
     if (const auto n = a.integer("particles", 1, kMaxParticles)) options.experiment.particles_count = static_cast<std::size_t>(*n);

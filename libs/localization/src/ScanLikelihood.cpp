@@ -8,26 +8,27 @@
 
 namespace simp::localization {
 
-void LidarModelOptions::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    weight = cfg.read_double(s, "weight", weight);
-    decimation = cfg.read_int(s, "decimation", decimation);
-    sigma_m = cfg.read_double(s, "sigma_m", sigma_m);
-    z_hit = cfg.read_double(s, "z_hit", z_hit);
-    z_random = cfg.read_double(s, "z_random", z_random);
-    max_range_m = cfg.read_double(s, "max_range_m", max_range_m);
-    max_corr_distance_m = cfg.read_double(s, "max_corr_distance_m", max_corr_distance_m);
-    map_objects = cfg.read_bool(s, "map_objects", map_objects);
-    const auto check = [&](bool ok, const std::string& key, const std::string& what) {
-        if (!ok) throw std::invalid_argument("[" + s + "] " + key + " " + what);
-    };
-    check(weight >= 0 && weight <= 100, "weight", "must be in [0, 100]");
-    check(decimation >= 1 && decimation <= 10000, "decimation", "must be in [1, 10000]");
-    check(sigma_m > 0 && sigma_m <= 10, "sigma_m", "must be in (0, 10]");
-    check(z_hit >= 0 && z_hit <= 1, "z_hit", "must be in [0, 1]");
-    check(z_random > 0 && z_random <= 1, "z_random", "must be in (0, 1] (0 makes one stray beam impossible)");
-    check(max_range_m > 0 && max_range_m <= 1000, "max_range_m", "must be in (0, 1000]");
-    check(max_corr_distance_m > 0 && max_corr_distance_m <= 100, "max_corr_distance_m", "must be in (0, 100]");
+const io::OptionTable<LidarModelOptions>& LidarModelOptions::table() {
+    using O = LidarModelOptions;
+    using io::ValueRange;
+    const ValueRange kFraction = ValueRange::between(0, 1);
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("LidarModel")
+            .number("weight", &O::weight, "", ValueRange::between(0, 100), "exponent of the scan likelihood (relative to the object model's 1 in `simp+lidar`)")
+            .integer("decimation", &O::decimation, ValueRange::between(1, 10000), "every n-th beam (1081 -> 109), `LF_decimation`")
+            .number("sigma_m", &O::sigma_m, "m", ValueRange::aboveUpTo(0, 10), "std of a beam end around the nearest wall, `LF_stdHit`")
+            .number("z_hit", &O::z_hit, "", kFraction, "weight of the hit model, `LF_zHit`")
+            .number("z_random", &O::z_random, "", ValueRange::aboveUpTo(0, 1),
+                    "weight of random returns, `LF_zRandom` (> 0: one stray beam stays possible)")
+            .number("max_range_m", &O::max_range_m, "m", ValueRange::aboveUpTo(0, 1000), "beams beyond are not weighed, `LF_maxRange`")
+            .number("max_corr_distance_m", &O::max_corr_distance_m, "m", ValueRange::aboveUpTo(0, 100),
+                    "the distance to the nearest wall is capped here, `LF_maxCorrsDistance`")
+            .flag("map_objects", &O::map_objects,
+                  "`simp+lidar`: the map's objects spanning the scan plane are obstacles of the scan grid (`lidar` never uses them)");
+    return t;
 }
+
+void LidarModelOptions::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
 
 ScanLikelihood::ScanLikelihood(const mrpt::maps::COccupancyGridMap2D& floorplan, const LidarModelOptions& options,
                                const world::ObjectMapData* objects)

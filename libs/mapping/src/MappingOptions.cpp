@@ -1,51 +1,15 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <simp/io/NameValueList.h>
-#include <simp/io/StrictNumber.h>
 #include <simp/mapping/MappingOptions.h>
 
-#include <cmath>
-#include <ostream>
 #include <sstream>
 #include <stdexcept>
-#include <vector>
 
 namespace simp::mapping {
 namespace {
 
-using io::trimIniValue;
-
-void requireFinite(double v, const char* name) {
-    if (!std::isfinite(v)) throw std::invalid_argument(std::string("mapping option '") + name + "' is not a finite number");
-}
-
-void requireRange(double v, double lo, double hi, const char* name) {
-    requireFinite(v, name);
-    if (v < lo || v > hi) {
-        std::ostringstream s;
-        s << "mapping option '" << name << "' = " << v << " outside [" << lo << ", " << hi << "]";
-        throw std::invalid_argument(s.str());
-    }
-}
-
-/// Reads a double key; absent keeps `value`; anything but a whole finite number throws naming the key.
-void readDouble(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, double& value) {
-    const std::string text = trimIniValue(c.read_string(section, key, "", false));
-    if (text.empty()) return;
-    const auto v = io::parseFiniteNumber(text);
-    if (!v) throw std::invalid_argument("mapping option [" + section + "] " + key + " = '" + text + "' is not a finite number");
-    value = *v;
-}
-
-void readInt(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, int& value) {
-    const std::string text = trimIniValue(c.read_string(section, key, "", false));
-    if (text.empty()) return;
-    value = static_cast<int>(io::parseInteger(text, "mapping option [" + section + "] " + key, -1000000, 1000000));
-}
-
-void readBool(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, bool& value) {
-    const std::string text = trimIniValue(c.read_string(section, key, "", false));
-    if (!text.empty()) value = io::parseBool(text, "mapping option [" + section + "] " + key);
-}
+using io::ValueRange;
+using O = MappingOptions;
 
 // The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist).
 struct AuthorsRow {
@@ -59,6 +23,55 @@ constexpr AuthorsRow kAuthorsFilters[] = {
     {"cabinet", 0.9, 1.0, 5.0},  {"chair", 0.0, 0.0, 0.0},        {"fire extinguisher", 0.9, 0.0, 3.0},
     {"person", 0.0, 0.0, 0.0},   {"desk", 0.8, 0.5, 4.0},
 };
+
+std::string listText(const std::map<std::string, double>& m, int precision) {
+    std::ostringstream s;
+    s.precision(precision);
+    for (const auto& [name, v] : m) s << (s.tellp() > 0 ? ", " : "") << name << ":" << v;
+    return s.str();
+}
+
+bool allIn(const std::map<std::string, double>& m, const ValueRange& r) {
+    for (const auto& [name, v] : m)
+        if (!r.contains(v)) return false;
+    return true;
+}
+
+/// A "name:value, ..." key of a per-class map: an empty value keeps the map (the defaults).
+template <class Field>
+void classMap(io::OptionTable<O>& t, const std::string& key, Field field, const std::string& unit, ValueRange range,
+              const std::string& meaning) {
+    t.custom(
+        key, unit, "name:value, ... each " + range.text(), meaning,
+        [field, key](O& o, const std::string& text, const std::string&) {
+            if (!text.empty()) o.*field = parseClassValueList(text, key);
+        },
+        [field](const O& o, int precision) { return listText(o.*field, precision); },
+        [field, range](const O& o) { return allIn(o.*field, range); });
+}
+
+/// class_min_confidence, class_min_range_m, class_max_range_m: one member of every per-class filter;
+/// a class first named here starts from the default filter.
+void classFilter(io::OptionTable<O>& t, const std::string& key, double ClassFilter::*member, const std::string& unit,
+                 ValueRange range, const std::string& meaning) {
+    const auto column = [member](const O& o) {
+        std::map<std::string, double> m;
+        for (const auto& [name, f] : o.per_class) m[name] = f.*member;
+        return m;
+    };
+    t.custom(
+        key, unit, "name:value, ... each " + range.text(), meaning,
+        [member, key](O& o, const std::string& text, const std::string&) {
+            if (text.empty()) return;
+            for (const auto& [name, v] : parseClassValueList(text, key)) {
+                auto it = o.per_class.find(name);
+                if (it == o.per_class.end()) it = o.per_class.emplace(name, o.default_filter).first;
+                it->second.*member = v;
+            }
+        },
+        [column](const O& o, int precision) { return listText(column(o), precision); },
+        [column, range](const O& o) { return allIn(column(o), range); });
+}
 
 }  // namespace
 
@@ -94,208 +107,110 @@ std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::st
     return p;
 }
 
+const io::OptionTable<MappingOptions>& MappingOptions::table() {
+    static const io::OptionTable<O> t = [] {
+        const auto between = ValueRange::between;
+        io::OptionTable<O> t("mapping");
+        t.number("trigger_dist_m", &O::trigger_dist_m, "m", between(0, 1e3), "authors' `odom_trigerTH[0]`; the paper's d_xy = 0.1 m / d_theta = 0.03 rad (Table \"Algorithm parameters\") are "
+                    "the localization update triggers, the authors' mapping code uses 0.2 m / 0.1 rad")
+            .number("trigger_angle_rad", &O::trigger_angle_rad, "rad", between(0, 10), "authors' `odom_trigerTH[1]`")
+            .number("tau_cost", &O::tau_cost, "", between(0, 1), "authors' `costTH`")
+            .number("tau_purge", &O::tau_purge, "", between(0, 1e6), "paper: empirical; purge when n_match / n_skip < 0.5")
+            .integer("min_local_detections", &O::min_local_detections, between(1, 1e6), "authors' `totalSeenTH`")
+            .number("min_local_support", &O::min_local_support, "detections per time step", between(0, 1e3),
+                    "authors' `purgeDetections` (`times_matched < 0.3 detc_cnt` dropped)")
+            .integer("min_confirmed_matches", &O::min_confirmed_matches, "detections", between(1, 1e6),
+                     "project addition: objects with fewer are tentative, not written (\"Output: confirmed objects\")")
+            .integer("min_confirmed_windows", &O::min_confirmed_windows, "integration windows", between(1, 1e6),
+                     "project addition: objects matched in fewer windows are tentative too; 1 = off")
+            .flag("merge_duplicates", &O::merge_duplicates, "the authors' `mergeObjects` (not in the paper; see \"Duplicate rules\")")
+            .number("duplicate_tau_cost", &O::duplicate_tau_cost, "", between(0, 1), "authors' `mergeObjects(objs, 0.7)`")
+            .number("duplicate_max_distance_m", &O::duplicate_max_distance_m, "m", between(0, 1e3), "authors' `mergeObjectsSingle`")
+            .number("duplicate_center_radius_m", &O::duplicate_center_radius_m, "m", between(0, 1e3), "authors' `centerMerge`")
+            .number("duplicate_min_overlap", &O::duplicate_min_overlap, "", between(0, 1),
+                    "project rule: 3D intersection / smaller box volume; 0 = off")
+            .flag("remove_class_bias", &O::remove_class_bias, "project addition: map boxes = mean of detections minus the class noise mean `R_o mu` (\"Detector bias\")")
+            .flag("hide_objects_in_walls", &O::hide_objects_in_walls, "project addition: on a walls-only plan, objects centred in a wall or outside are not written (\"Output: confirmed objects\")");
+        classMap(t, "class_duplicate_center_radius_m", &O::class_duplicate_center_radius_m, "m", between(0, 1e3),
+                 "authors' `centerMerge`");
+        t.choice("wall_align", &O::wall_align,
+                 std::vector<std::pair<std::string, WallAlignMode>>{{"auto", WallAlignMode::Auto}, {"true", WallAlignMode::On},
+                                                                    {"on", WallAlignMode::On},     {"1", WallAlignMode::On},
+                                                                    {"false", WallAlignMode::Off}, {"off", WallAlignMode::Off},
+                                                                    {"0", WallAlignMode::Off}},
+                 "project addition: the floor-plan prior (\"Wall alignment\"); `auto`: on unless the floor plan draws furniture")
+            .number("wall_align_max_enclosed_unknown_m2", &O::wall_align_max_enclosed_unknown_m2, "m^2", between(0, 1e9),
+                    "`auto`: more unknown area enclosed by walls than this = the plan draws furniture");
+        // An explicit (even empty) list replaces the default: "class_wall_align_max_gap_m = " aligns no class.
+        t.custom(
+            "class_wall_align_max_gap_m", "m", "name:value, ... each in [0, 10]", "classes not listed are not aligned; an empty list aligns none",
+            [](O& o, const std::string& text, const std::string&) {
+                o.class_wall_align_max_gap_m =
+                    text.empty() ? std::map<std::string, double>{} : parseClassValueList(text, "class_wall_align_max_gap_m");
+            },
+            [](const O& o, int precision) { return listText(o.class_wall_align_max_gap_m, precision); },
+            [](const O& o) { return allIn(o.class_wall_align_max_gap_m, ValueRange::between(0, 10)); });
+        t.number("wall_align_max_penetration_m", &O::wall_align_max_penetration_m, "m", between(0, 10), "a side this far inside the wall is still pulled out")
+            .number("wall_align_max_yaw_rad", &O::wall_align_max_yaw_rad, "rad", between(0, 1.5), "side within this angle of parallel to the wall")
+            .number("wall_align_max_residual_m", &O::wall_align_max_residual_m, "m", between(0, 10), "straightness of the wall face along the side")
+            .integer("wall_align_rays", &O::wall_align_rays, between(2, 100), "rays per side")
+            .flag("intersecting_boxes_occlude", &O::intersecting_boxes_occlude,
+                  "project option: false = boxes intersecting in 3D form a group that does not occlude itself in I_active (duplicates "
+                  "become active, are skipped and purged); doc/results.md")
+            .number("cost_covariance_scale", &O::cost_covariance_scale, "", between(1e-6, 1e6), "C_cen covariance factor (1 = paper); doc/results.md")
+            .flag("cost_uses_noise_mean", &O::cost_uses_noise_mean, "project choice: C_cen with the class bias mu (false: without)")
+            .number("default_noise_sigma_m", &O::default_noise_sigma_m, "m", between(1e-6, 1e3), "C_cen of classes without a noise model")
+            .number("truncation_threshold", &O::truncation_threshold, "", between(0, 1), "authors' `truncTH`")
+            .number("max_occluded_fraction", &O::max_occluded_fraction, "", between(0, 1), "project choice: more of the box hidden by boxes or walls: inactive")
+            .integer("zbuffer_downscale", &O::zbuffer_downscale, "px", between(1, 64), "z-buffer pixel = this many image pixels per side (80 x 60 for 640 x 480)")
+            .number("wall_depth_margin_m", &O::wall_depth_margin_m, "m", between(0, 1e3), "boxes against walls stay visible")
+            .number("wall_cast_max_m", &O::wall_cast_max_m, "m", between(0, 1e4), "render / ray-cast limit")
+            .number("near_plane_m", &O::near_plane_m, "m", between(1e-4, 10), "camera near clipping plane")
+            .number("default_fx_px", &O::default_fx_px, "px", between(1e-3, 1e6), "authors' K, for observations without intrinsics")
+            .number("default_fy_px", &O::default_fy_px, "px", between(1e-3, 1e6), "authors' K")
+            .number("default_cx_px", &O::default_cx_px, "px", ValueRange::finite(), "authors' K")
+            .number("default_cy_px", &O::default_cy_px, "px", ValueRange::finite(), "authors' K")
+            .number("default_min_confidence", [](auto& o) -> auto& { return o.default_filter.min_confidence; }, "", between(0, 1),
+                    "detection filter of classes not listed")
+            .number("default_min_range_m", [](auto& o) -> auto& { return o.default_filter.min_range_m; }, "m", between(0, 1e4), "detection filter of classes not listed")
+            .number("default_max_range_m", [](auto& o) -> auto& { return o.default_filter.max_range_m; }, "m", between(0, 1e4), "detection filter of classes not listed")
+            .integer("update_min_missed_windows", &O::update_min_missed_windows, "windows", between(1, 1e6),
+                     "`--update`: an object of M0 active without a match in this many windows of the session ...")
+            .number("update_max_seen_fraction", &O::update_max_seen_fraction, "", between(0, 1), "... and matched in fewer than this fraction of them is removed (\"Map update across sessions\")")
+            .number("update_move_max_distance_m", &O::update_move_max_distance_m, "m", between(0, 100),
+                    "a removed object with a new object of its class this close is moved")
+            .number("update_min_move_m", &O::update_min_move_m, "m", between(0, 100), "closer: the object re-estimated, no change")
+            .integer("update_min_new_windows", &O::update_min_new_windows, "windows", between(1, 1e6),
+                     "a new object enters the updated map and the report after this many matched windows")
+            .number("update_removal_alpha", &O::update_removal_alpha, "", between(0, 1),
+                    "a removal also needs P(<= matched of the expected windows, given the class's match rate this session) below this (binomial)")
+            .number("update_reassociate_max_seen_fraction", &O::update_reassociate_max_seen_fraction, "", between(0, 1),
+                    "an object matched in fewer than this fraction of its windows (missed >= 3, unlikely for its class) is moved to a new "
+                    "object of its class within `update_move_max_distance_m`, else kept")
+            .number("room_door_width_m", &O::room_door_width_m, "m", between(0, 100), "segmentation erosion (see \"Rooms\")")
+            .number("room_min_area_m2", &O::room_min_area_m2, "m^2", between(0, 1e6), "segmentation: smaller eroded components are not rooms")
+            .number("room_search_radius_m", &O::room_search_radius_m, "m", between(0, 100), "room of a point in a wall")
+            .choice("room_update_policy", &O::room_policy,
+                    std::vector<std::pair<std::string, RoomUpdatePolicy>>{{"current_room", RoomUpdatePolicy::CurrentRoom},
+                                                                          {"all", RoomUpdatePolicy::All}},
+                    "`current_room` (paper): only objects and detections of the robot's room; `all`: no room filter");
+        classFilter(t, "class_min_confidence", &ClassFilter::min_confidence, "", between(0, 1), "authors' `omni_conf`");
+        classFilter(t, "class_min_range_m", &ClassFilter::min_range_m, "m", between(0, 1e4), "authors' `min_dist`");
+        classFilter(t, "class_max_range_m", &ClassFilter::max_range_m, "m", between(0, 1e4), "authors' `max_dist`; 0 disables the class (authors: door, box, chair, person)");
+        t.rule("update_min_move_m", [](const O& o) { return o.update_min_move_m <= o.update_move_max_distance_m; },
+               "not exceed update_move_max_distance_m");
+        return t;
+    }();
+    return t;
+}
+
 void MappingOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& c, const std::string& s) {
     // Unknown keys: io::StrictIni::checkUnknown() after loading (the keys read here are the known ones).
-    readDouble(c, s, "trigger_dist_m", trigger_dist_m);
-    readDouble(c, s, "trigger_angle_rad", trigger_angle_rad);
-    readDouble(c, s, "tau_cost", tau_cost);
-    readDouble(c, s, "tau_purge", tau_purge);
-    readInt(c, s, "min_local_detections", min_local_detections);
-    readDouble(c, s, "min_local_support", min_local_support);
-    readInt(c, s, "min_confirmed_matches", min_confirmed_matches);
-    readInt(c, s, "min_confirmed_windows", min_confirmed_windows);
-    readBool(c, s, "merge_duplicates", merge_duplicates);
-    readDouble(c, s, "duplicate_tau_cost", duplicate_tau_cost);
-    readDouble(c, s, "duplicate_max_distance_m", duplicate_max_distance_m);
-    readDouble(c, s, "duplicate_center_radius_m", duplicate_center_radius_m);
-    readDouble(c, s, "duplicate_min_overlap", duplicate_min_overlap);
-    readBool(c, s, "remove_class_bias", remove_class_bias);
-    readBool(c, s, "hide_objects_in_walls", hide_objects_in_walls);
-    {
-        const std::string key = "class_duplicate_center_radius_m";
-        const std::string text = c.read_string(s, key, "", false);
-        if (!trimIniValue(text).empty()) class_duplicate_center_radius_m = parseClassValueList(text, key);
-    }
-    {
-        const std::string mode = trimIniValue(c.read_string(s, "wall_align", "", false));
-        if (mode == "auto") wall_align = WallAlignMode::Auto;
-        else if (mode == "true" || mode == "on" || mode == "1") wall_align = WallAlignMode::On;
-        else if (mode == "false" || mode == "off" || mode == "0") wall_align = WallAlignMode::Off;
-        else if (!mode.empty())
-            throw std::invalid_argument("mapping option [" + s + "] wall_align = '" + mode + "': expected auto, true or false");
-    }
-    readDouble(c, s, "wall_align_max_enclosed_unknown_m2", wall_align_max_enclosed_unknown_m2);
-    {
-        // An explicit (even empty) list replaces the default: "class_wall_align_max_gap_m = " aligns no class.
-        const std::string key = "class_wall_align_max_gap_m";
-        const std::string raw = c.read_string(s, key, "<absent>", false);
-        if (raw != "<absent>") {
-            const std::string text = trimIniValue(raw);
-            class_wall_align_max_gap_m = text.empty() ? std::map<std::string, double>{} : parseClassValueList(text, key);
-        }
-    }
-    readDouble(c, s, "wall_align_max_penetration_m", wall_align_max_penetration_m);
-    readDouble(c, s, "wall_align_max_yaw_rad", wall_align_max_yaw_rad);
-    readDouble(c, s, "wall_align_max_residual_m", wall_align_max_residual_m);
-    readInt(c, s, "wall_align_rays", wall_align_rays);
-    readBool(c, s, "intersecting_boxes_occlude", intersecting_boxes_occlude);
-    readDouble(c, s, "cost_covariance_scale", cost_covariance_scale);
-    readBool(c, s, "cost_uses_noise_mean", cost_uses_noise_mean);
-    readDouble(c, s, "default_noise_sigma_m", default_noise_sigma_m);
-    readDouble(c, s, "truncation_threshold", truncation_threshold);
-    readDouble(c, s, "max_occluded_fraction", max_occluded_fraction);
-    readInt(c, s, "zbuffer_downscale", zbuffer_downscale);
-    readDouble(c, s, "wall_depth_margin_m", wall_depth_margin_m);
-    readDouble(c, s, "wall_cast_max_m", wall_cast_max_m);
-    readDouble(c, s, "near_plane_m", near_plane_m);
-    readDouble(c, s, "default_fx_px", default_fx_px);
-    readDouble(c, s, "default_fy_px", default_fy_px);
-    readDouble(c, s, "default_cx_px", default_cx_px);
-    readDouble(c, s, "default_cy_px", default_cy_px);
-    readDouble(c, s, "default_min_confidence", default_filter.min_confidence);
-    readDouble(c, s, "default_min_range_m", default_filter.min_range_m);
-    readDouble(c, s, "default_max_range_m", default_filter.max_range_m);
-    readInt(c, s, "update_min_missed_windows", update_min_missed_windows);
-    readDouble(c, s, "update_max_seen_fraction", update_max_seen_fraction);
-    readDouble(c, s, "update_move_max_distance_m", update_move_max_distance_m);
-    readDouble(c, s, "update_min_move_m", update_min_move_m);
-    readInt(c, s, "update_min_new_windows", update_min_new_windows);
-    readDouble(c, s, "update_removal_alpha", update_removal_alpha);
-    readDouble(c, s, "update_reassociate_max_seen_fraction", update_reassociate_max_seen_fraction);
-    readDouble(c, s, "room_door_width_m", room_door_width_m);
-    readDouble(c, s, "room_min_area_m2", room_min_area_m2);
-    readDouble(c, s, "room_search_radius_m", room_search_radius_m);
-
-    const std::string policy = trimIniValue(c.read_string(s, "room_update_policy", "", false));
-    if (policy == "current_room") room_policy = RoomUpdatePolicy::CurrentRoom;
-    else if (policy == "all") room_policy = RoomUpdatePolicy::All;
-    else if (!policy.empty())
-        throw std::invalid_argument("mapping option [" + s + "] room_update_policy = '" + policy + "': expected current_room or all");
-
-    const std::pair<const char*, double ClassFilter::*> lists[] = {
-        {"class_min_confidence", &ClassFilter::min_confidence},
-        {"class_min_range_m", &ClassFilter::min_range_m},
-        {"class_max_range_m", &ClassFilter::max_range_m}};
-    for (const auto& [key, member] : lists) {
-        const std::string text = c.read_string(s, key, "", false);
-        if (trimIniValue(text).empty()) continue;
-        for (const auto& [name, v] : parseClassValueList(text, key)) {
-            auto it = per_class.find(name);
-            if (it == per_class.end()) it = per_class.emplace(name, default_filter).first;
-            it->second.*member = v;
-        }
-    }
-    validate();
+    table().load(c, s, *this);
 }
 
-void MappingOptions::validate() const {
-    requireRange(trigger_dist_m, 0.0, 1e3, "trigger_dist_m");
-    requireRange(trigger_angle_rad, 0.0, 10.0, "trigger_angle_rad");
-    requireRange(tau_cost, 0.0, 1.0, "tau_cost");
-    requireRange(tau_purge, 0.0, 1e6, "tau_purge");
-    requireRange(min_local_detections, 1, 1e6, "min_local_detections");
-    requireRange(min_local_support, 0.0, 1e3, "min_local_support");
-    requireRange(min_confirmed_matches, 1, 1e6, "min_confirmed_matches");
-    requireRange(min_confirmed_windows, 1, 1e6, "min_confirmed_windows");
-    requireRange(duplicate_tau_cost, 0.0, 1.0, "duplicate_tau_cost");
-    requireRange(duplicate_max_distance_m, 0.0, 1e3, "duplicate_max_distance_m");
-    requireRange(duplicate_center_radius_m, 0.0, 1e3, "duplicate_center_radius_m");
-    requireRange(duplicate_min_overlap, 0.0, 1.0, "duplicate_min_overlap");
-    for (const auto& [name, r] : class_duplicate_center_radius_m)
-        requireRange(r, 0.0, 1e3, ("class_duplicate_center_radius_m of class '" + name + "'").c_str());
-    for (const auto& [name, g] : class_wall_align_max_gap_m)
-        requireRange(g, 0.0, 10.0, ("class_wall_align_max_gap_m of class '" + name + "'").c_str());
-    requireRange(wall_align_max_penetration_m, 0.0, 10.0, "wall_align_max_penetration_m");
-    requireRange(wall_align_max_enclosed_unknown_m2, 0.0, 1e9, "wall_align_max_enclosed_unknown_m2");
-    requireRange(wall_align_max_yaw_rad, 0.0, 1.5, "wall_align_max_yaw_rad");
-    requireRange(wall_align_max_residual_m, 0.0, 10.0, "wall_align_max_residual_m");
-    requireRange(wall_align_rays, 2, 100, "wall_align_rays");
-    requireRange(default_noise_sigma_m, 1e-6, 1e3, "default_noise_sigma_m");
-    requireRange(cost_covariance_scale, 1e-6, 1e6, "cost_covariance_scale");
-    requireRange(truncation_threshold, 0.0, 1.0, "truncation_threshold");
-    requireRange(max_occluded_fraction, 0.0, 1.0, "max_occluded_fraction");
-    requireRange(zbuffer_downscale, 1, 64, "zbuffer_downscale");
-    requireRange(wall_depth_margin_m, 0.0, 1e3, "wall_depth_margin_m");
-    requireRange(wall_cast_max_m, 0.0, 1e4, "wall_cast_max_m");
-    requireRange(near_plane_m, 1e-4, 10.0, "near_plane_m");
-    requireRange(default_fx_px, 1e-3, 1e6, "default_fx_px");
-    requireRange(default_fy_px, 1e-3, 1e6, "default_fy_px");
-    requireFinite(default_cx_px, "default_cx_px");
-    requireFinite(default_cy_px, "default_cy_px");
-    requireRange(update_min_missed_windows, 1, 1e6, "update_min_missed_windows");
-    requireRange(update_max_seen_fraction, 0.0, 1.0, "update_max_seen_fraction");
-    requireRange(update_move_max_distance_m, 0.0, 100.0, "update_move_max_distance_m");
-    requireRange(update_min_move_m, 0.0, 100.0, "update_min_move_m");
-    requireRange(update_min_new_windows, 1, 1e6, "update_min_new_windows");
-    requireRange(update_removal_alpha, 0.0, 1.0, "update_removal_alpha");
-    requireRange(update_reassociate_max_seen_fraction, 0.0, 1.0, "update_reassociate_max_seen_fraction");
-    if (update_min_move_m > update_move_max_distance_m)
-        throw std::invalid_argument("mapping option update_min_move_m (" + std::to_string(update_min_move_m) +
-                                    ") must not exceed update_move_max_distance_m (" +
-                                    std::to_string(update_move_max_distance_m) + ")");
-    requireRange(room_door_width_m, 0.0, 100.0, "room_door_width_m");
-    requireRange(room_min_area_m2, 0.0, 1e6, "room_min_area_m2");
-    requireRange(room_search_radius_m, 0.0, 100.0, "room_search_radius_m");
-    auto checkFilter = [](const ClassFilter& f, const std::string& who) {
-        const std::string p = who + ".";
-        requireRange(f.min_confidence, 0.0, 1.0, (p + "min_confidence").c_str());
-        requireRange(f.min_range_m, 0.0, 1e4, (p + "min_range_m").c_str());
-        requireRange(f.max_range_m, 0.0, 1e4, (p + "max_range_m").c_str());
-    };
-    checkFilter(default_filter, "default");
-    for (const auto& [name, f] : per_class) checkFilter(f, "class '" + name + "'");
-}
+void MappingOptions::validate() const { table().validate(*this); }
 
-void MappingOptions::dumpToTextStream(std::ostream& o) const {
-    o << "\n----------- [simp::mapping::MappingOptions] ------------\n";
-    o << "trigger_dist_m        = " << trigger_dist_m << " m\n";
-    o << "trigger_angle_rad     = " << trigger_angle_rad << " rad\n";
-    o << "tau_cost              = " << tau_cost << "\n";
-    o << "tau_purge             = " << tau_purge << "\n";
-    o << "min_local_detections  = " << min_local_detections << "\n";
-    o << "min_local_support     = " << min_local_support << " detections per time step\n";
-    o << "min_confirmed_matches = " << min_confirmed_matches << " detections\n";
-    o << "min_confirmed_windows = " << min_confirmed_windows << " integration windows\n";
-    o << "merge_duplicates      = " << (merge_duplicates ? "true" : "false") << "\n";
-    o << "duplicate_tau_cost    = " << duplicate_tau_cost << "\n";
-    o << "duplicate_max_distance_m = " << duplicate_max_distance_m << " m\n";
-    o << "duplicate_min_overlap = " << duplicate_min_overlap << (duplicate_min_overlap > 0 ? "" : " (off)") << "\n";
-    o << "duplicate_center_radius_m = " << duplicate_center_radius_m << " m";
-    for (const auto& [name, r] : class_duplicate_center_radius_m) o << ", " << name << ": " << r << " m";
-    o << "\n";
-    o << "wall_align            = "
-      << (wall_align == WallAlignMode::Auto ? "auto" : wall_align == WallAlignMode::On ? "true" : "false")
-      << " (auto: off above " << wall_align_max_enclosed_unknown_m2 << " m^2 enclosed unknown), max gap per class:";
-    for (const auto& [name, g] : class_wall_align_max_gap_m) o << " " << name << ": " << g << " m,";
-    o << " penetration <= " << wall_align_max_penetration_m << " m, yaw <= " << wall_align_max_yaw_rad
-      << " rad, residual <= " << wall_align_max_residual_m << " m, " << wall_align_rays << " rays per side\n";
-    o << "cost_covariance_scale = " << cost_covariance_scale << "\n";
-    o << "intersecting_boxes_occlude = " << (intersecting_boxes_occlude ? "true" : "false") << "\n";
-    o << "cost_uses_noise_mean  = " << (cost_uses_noise_mean ? "true" : "false") << "\n";
-    o << "remove_class_bias     = " << (remove_class_bias ? "true" : "false") << "\n";
-    o << "hide_objects_in_walls = " << (hide_objects_in_walls ? "true" : "false") << "\n";
-    o << "default_noise_sigma_m = " << default_noise_sigma_m << " m\n";
-    o << "truncation_threshold  = " << truncation_threshold << "\n";
-    o << "max_occluded_fraction = " << max_occluded_fraction << "\n";
-    o << "zbuffer_downscale     = " << zbuffer_downscale << " px\n";
-    o << "wall_depth_margin_m   = " << wall_depth_margin_m << " m\n";
-    o << "wall_cast_max_m       = " << wall_cast_max_m << " m\n";
-    o << "near_plane_m          = " << near_plane_m << " m\n";
-    o << "default K (fx fy cx cy) = " << default_fx_px << " " << default_fy_px << " " << default_cx_px << " "
-      << default_cy_px << " px\n";
-    o << "update: removed after >= " << update_min_missed_windows << " missed windows with seen fraction < "
-      << update_max_seen_fraction << "; moved within " << update_move_max_distance_m << " m, re-estimated below "
-      << update_min_move_m << " m; new objects after " << update_min_new_windows << " windows; removal alpha "
-      << update_removal_alpha << "; re-associated below seen fraction " << update_reassociate_max_seen_fraction << "\n";
-    o << "room_update_policy    = " << (room_policy == RoomUpdatePolicy::CurrentRoom ? "current_room" : "all") << "\n";
-    o << "room_door_width_m     = " << room_door_width_m << " m\n";
-    o << "room_min_area_m2      = " << room_min_area_m2 << " m^2\n";
-    o << "room_search_radius_m  = " << room_search_radius_m << " m\n";
-    o << "default filter: conf >= " << default_filter.min_confidence << ", range [" << default_filter.min_range_m << ", "
-      << default_filter.max_range_m << "] m\n";
-    for (const auto& [name, f] : per_class)
-        o << "class '" << name << "': conf >= " << f.min_confidence << ", range [" << f.min_range_m << ", "
-          << f.max_range_m << "] m" << (f.max_range_m <= 0 ? " (disabled)" : "") << "\n";
-}
+void MappingOptions::dumpToTextStream(std::ostream& o) const { table().dump(*this, o); }
 
 }  // namespace simp::mapping

@@ -3,72 +3,65 @@
 #include <simp/maps/CObjectMap.h>
 
 #include <algorithm>
-#include <cmath>
-#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace simp::maps {
 
+namespace {
+/// "name:value, ..." sorted by name, numbers to `precision` digits (formatConfidenceThresholds' form).
+std::string thresholdsText(const ConfidenceThresholds& thresholds, int precision) {
+    std::ostringstream s;
+    s.precision(precision);
+    for (const auto& [name, v] : thresholds) s << (s.tellp() > 0 ? ", " : "") << name << ":" << v;
+    return s.str();
+}
+}  // namespace
+
+const io::OptionTable<CObjectMap::TLikelihoodOptions>& CObjectMap::TLikelihoodOptions::table() {
+    using O = TLikelihoodOptions;
+    using io::ValueRange;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("<prefix>_likelihoodOpts")
+            .custom(
+                "sensor_model", "", io::option_text::choices(sensorModelTypeNames()), "the 3D-object sensor model (case-insensitive)",
+                [](O& o, const std::string& text, const std::string& at) {
+                    try {
+                        o.sensor_model = parseSensorModelType(text);
+                    } catch (const std::invalid_argument& e) {
+                        throw std::invalid_argument(at + ": " + e.what());
+                    }
+                },
+                [](const O& o, int) { return toString(o.sensor_model); })
+            .number("eta", &O::eta, "", ValueRange::open(0, 1), "Eq. combined: likelihood of a false association")
+            .custom(
+                "confidence_thresholds", "", "name:value, ...", "`name:value` pairs separated by commas (class names may contain spaces); each entry overrides that class's "
+                "threshold, the others keep the paper's value (`nmcl.config`)",
+                [](O& o, const std::string& text, const std::string& at) {
+                    for (const auto& [name, value] : parseConfidenceThresholds(text, at)) o.confidence_thresholds[name] = value;
+                },
+                [](const O& o, int precision) { return thresholdsText(o.confidence_thresholds, precision); })
+            .number("default_confidence_threshold", &O::default_confidence_threshold, "", ValueRange::between(0, 1),
+                    "for classes in no table")
+            .number("mp_resolution_m", &O::mp_resolution_m, "m", ValueRange::positive(), "m_p raster cell")
+            .number("mp_min_probability", &O::mp_min_probability, "", ValueRange::open(0, 1), "m_p support: p_o below this counts as 0")
+            .flag("skip_classes_without_noise", &O::skip_classes_without_noise, "true: ignore classes without a noise model instead of throwing (see \"Bad input\")")
+            .number("unmodelled_noise_std_m", &O::unmodelled_noise_std_m, "m", ValueRange::atLeast(0),
+                    "> 0: isotropic noise of objects without a noise model; 0 = skipped (the paper)")
+            .number("edt_sigma_m", &O::edt_sigma_m, "m", ValueRange::positive(), "EDT baseline: sigma of the centre distance; 6 px at 0.05 m, HSMCL's sigma_obs in the paper's Table")
+            .number("edt_max_distance_m", &O::edt_max_distance_m, "m", ValueRange::positive(), "EDT baseline: distance clamp")
+            .number("edt_resolution_m", &O::edt_resolution_m, "m", ValueRange::positive(), "EDT baseline: raster cell")
+            .number("noise_reference_range_m", &O::noise_reference_range_m, "m", ValueRange::atLeast(0),
+                    "detections farther than this are scored with the noise widened by range / this; 0 = off");
+    return t;
+}
+
 void CObjectMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
                                                         const std::string& section) {
-    const std::string model_name = source.read_string(section, "sensor_model", toString(sensor_model));
-    try {
-        sensor_model = parseSensorModelType(model_name);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("[" + section + "] sensor_model: " + e.what());
-    }
-    MRPT_LOAD_CONFIG_VAR(eta, double, source, section);
-    if (!(eta > 0.0 && eta < 1.0))
-        throw std::invalid_argument("[" + section + "] eta = " + std::to_string(eta) + " must be in (0, 1)");
-
-    const std::string thresholds_text = source.read_string(section, "confidence_thresholds", "");
-    for (const auto& [name, value] :
-         parseConfidenceThresholds(thresholds_text, "[" + section + "] confidence_thresholds"))
-        confidence_thresholds[name] = value;  // override the defaults class by class
-    MRPT_LOAD_CONFIG_VAR(default_confidence_threshold, double, source, section);
-    if (!(default_confidence_threshold >= 0.0 && default_confidence_threshold <= 1.0))
-        throw std::invalid_argument("[" + section + "] default_confidence_threshold must be in [0, 1]");
-
-    MRPT_LOAD_CONFIG_VAR(mp_resolution_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(mp_min_probability, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(skip_classes_without_noise, bool, source, section);
-    MRPT_LOAD_CONFIG_VAR(unmodelled_noise_std_m, double, source, section);
-    if (!(unmodelled_noise_std_m >= 0.0 && std::isfinite(unmodelled_noise_std_m)))
-        throw std::invalid_argument("[" + section + "] unmodelled_noise_std_m = " + std::to_string(unmodelled_noise_std_m) +
-                                    " must be >= 0 (0 = off)");
-    MRPT_LOAD_CONFIG_VAR(edt_sigma_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(edt_max_distance_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(edt_resolution_m, double, source, section);
-    MRPT_LOAD_CONFIG_VAR(noise_reference_range_m, double, source, section);
-    if (!(noise_reference_range_m >= 0.0 && std::isfinite(noise_reference_range_m)))
-        throw std::invalid_argument("[" + section + "] noise_reference_range_m = " +
-                                    std::to_string(noise_reference_range_m) + " must be >= 0 (0 = off)");
-    const auto positive = [&](double v, const char* key) {
-        if (!(v > 0.0)) throw std::invalid_argument("[" + section + "] " + key + " = " + std::to_string(v) + " must be > 0");
-    };
-    positive(mp_resolution_m, "mp_resolution_m");
-    positive(edt_sigma_m, "edt_sigma_m");
-    positive(edt_max_distance_m, "edt_max_distance_m");
-    positive(edt_resolution_m, "edt_resolution_m");
-    if (!(mp_min_probability > 0.0 && mp_min_probability < 1.0))
-        throw std::invalid_argument("[" + section + "] mp_min_probability must be in (0, 1)");
+    table().load(source, section, *this);
 }
 
-void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const {
-    out << "\n----------- [simp::maps::CObjectMap::TLikelihoodOptions] ------------\n\n";
-    out << "sensor_model                            = " << toString(sensor_model) << "\n";
-    LOADABLEOPTS_DUMP_VAR(eta, double);
-    out << "confidence_thresholds                   = " << formatConfidenceThresholds(confidence_thresholds) << "\n";
-    LOADABLEOPTS_DUMP_VAR(default_confidence_threshold, double);
-    LOADABLEOPTS_DUMP_VAR(mp_resolution_m, double);
-    LOADABLEOPTS_DUMP_VAR(mp_min_probability, double);
-    LOADABLEOPTS_DUMP_VAR(skip_classes_without_noise, bool);
-    LOADABLEOPTS_DUMP_VAR(unmodelled_noise_std_m, double);
-    LOADABLEOPTS_DUMP_VAR(edt_sigma_m, double);
-    LOADABLEOPTS_DUMP_VAR(edt_max_distance_m, double);
-    LOADABLEOPTS_DUMP_VAR(edt_resolution_m, double);
-    LOADABLEOPTS_DUMP_VAR(noise_reference_range_m, double);
-}
+void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const { table().dump(*this, out); }
 
 double CObjectMap::TLikelihoodOptions::thresholdOf(const std::string& class_name) const {
     const auto it = confidence_thresholds.find(class_name);

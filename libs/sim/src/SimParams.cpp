@@ -1,21 +1,11 @@
+#include <simp/io/StrictNumber.h>
 #include <simp/obs/ObjectClasses.h>
 #include <simp/sim/SimParams.h>
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace simp::sim {
-namespace {
-
-/// "70", "12.5": seconds in messages as the user wrote them (std::to_string gives "70.000000").
-std::string shortText(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
-}  // namespace
 
 void OdometryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
     rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
@@ -58,8 +48,8 @@ void SimParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg) {
 void SimParams::validateKidnap(const std::string& what) const {
     if (!std::isfinite(kidnap_at_s)) throw std::invalid_argument(what + " must be a finite number of seconds");
     if (kidnap_at_s > duration_s)
-        throw std::invalid_argument(what + ": " + shortText(kidnap_at_s) + " s is beyond the duration of " +
-                                    shortText(duration_s) + " s");
+        throw std::invalid_argument(what + ": " + io::numberText(kidnap_at_s) + " s is beyond the duration of " +
+                                    io::numberText(duration_s) + " s");
 }
 
 }  // namespace simp::sim

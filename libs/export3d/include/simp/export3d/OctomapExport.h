@@ -7,6 +7,7 @@
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/COctoMap.h>
+#include <simp/io/OptionTable.h>
 #include <simp/world/World.h>
 
 #include <cstddef>
@@ -31,6 +32,8 @@ struct OctomapExportOptions : public mrpt::config::CLoadableOptions {
     static constexpr double kMinResolution_m = 0.01;
     static constexpr double kMaxResolution_m = 1.0;
 
+    /// The declaration of every key (section [octomap]).
+    static const io::OptionTable<OctomapExportOptions>& table();
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
     /// \throw std::invalid_argument starting with `where` and naming the key of a value out of range.

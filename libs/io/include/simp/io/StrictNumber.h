@@ -29,6 +29,9 @@ std::int64_t parseInteger(const std::string& text, const std::string& what, std:
 /// \throw std::invalid_argument "`what`: 'text' is not a boolean (true/false)".
 bool parseBool(const std::string& text, const std::string& what);
 
+/// `v` as messages print it: "70", "12.5", "1e+06" (6 significant digits; std::to_string gives "70.000000").
+std::string numberText(double v);
+
 /// "[lo, hi]" as printed in messages (integers without decimals, 1e+06 style for large values).
 std::string rangeText(double lo, double hi);
 

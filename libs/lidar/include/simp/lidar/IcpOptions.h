@@ -3,6 +3,7 @@
 /// [ICP] of simp-icp-poses' .ini (config_ini/icp-poses.ini): scan-to-floor-plan alignment with
 /// mrpt::slam::CICP. Every field is the .ini key of the same name.
 
+#include <simp/io/OptionTable.h>
 #include <simp/io/StrictIni.h>
 
 #include <string>
@@ -22,6 +23,8 @@ struct IcpPosesOptions {
     double max_correction_m = 0.1;       ///< an alignment moving the odometry prediction farther: rejected (m)
     double max_correction_deg = 5.0;     ///< same for the heading (deg)
 
+    /// The declaration of every key (section [ICP]).
+    static const io::OptionTable<IcpPosesOptions>& table();
     /// Reads [section]; absent keys keep their defaults; bad values throw naming file, section and key.
     void loadFromConfig(const io::StrictIni& cfg, const std::string& section = "ICP");
 };

@@ -1,12 +1,16 @@
 #pragma once
 /// \file LocalizeOptions.h
-/// The project's own .ini keys of simp-localize: [LocalizationExperiment] and [MotionModel].
+/// The project's own .ini keys of simp-localize: [LocalizationExperiment], [MotionModel] and the
+/// sections of the localizer's parameter structs. Each key is declared once, in an io::OptionTable
+/// (LocalizeOptions.cpp, LocalizeOptions_params.cpp): loading, range checks and the dump derive from it.
 /// MRPT's own sections ([PF_options], [KLD_options], [MetricMap]) are read by MRPT's loaders.
 
 #include <mrpt/bayes/CParticleFilter.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <simp/camera/FloorPlanThresholds.h>
+#include <simp/io/OptionTable.h>
 
 #include <cstdint>
 #include <optional>
@@ -34,7 +38,7 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
     std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
     std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else simp|edt|d|o|lidar|simp+lidar (doc/lidar.md)
-    double free_cells_threshold = 0.7;    ///< a floor-plan cell is free when p_free >= this (MRPT's default)
+    double free_cells_threshold = camera::floorplan::kParticleMinFree;  ///< a floor-plan cell is free when p_free >= this
     bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
@@ -61,6 +65,8 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     bool write_particles = true;          ///< write O/final_particles.txt
     bool write_png = true;                ///< write O/trajectory.png
 
+    /// The declaration of every key (section [LocalizationExperiment]).
+    static const io::OptionTable<ExperimentOptions>& table();
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
 };
@@ -75,6 +81,8 @@ struct MotionModelOptions : public mrpt::config::CLoadableOptions {
     static mrpt::obs::CActionRobotMovement2D::TMotionModelOptions paperDefaults();
     /// config_ini/simp.ini's: 0.05 per m / per rad (doc/localization.md "Robust tracking").
     static mrpt::obs::CActionRobotMovement2D::TMotionModelOptions defaults();
+    /// The declaration of every key (section [MotionModel]; keys = MRPT's field names).
+    static const io::OptionTable<MotionModelOptions>& table();
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
 };
@@ -90,6 +98,12 @@ void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::stri
 void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, SensorResettingParams& p);
 void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, HypothesisSearchParams& p);
 void loadChallengerParams(const mrpt::config::CConfigFileBase& cfg, const std::string& section, ChallengerParams& p);
+/// The declarations behind the loaders above.
+const io::OptionTable<StateParams>& stateParamsTable();
+const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable();
+const io::OptionTable<SensorResettingParams>& resettingParamsTable();
+const io::OptionTable<HypothesisSearchParams>& searchParamsTable();
+const io::OptionTable<ChallengerParams>& challengerParamsTable();
 
 /// [PF_options] settings that MRPT needs together: KLD sampling (adaptiveSampleSize = true) in MRPT
 /// 2.5's 2D MCL draws with multinomial resampling only, so it sets resamplingMethod = prMultinomial.
@@ -102,7 +116,8 @@ struct LocalizerOptions;
 /// checkUnknown() afterwards names every key none of them asked for.
 void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOptions& options);
 
-/// Sensor model names accepted by --method and sensor_model.
+/// Sensor model names accepted by --method and sensor_model: the object models of
+/// maps::sensorModelTypeNames() and the LiDAR ones (lidar, simp+lidar).
 const std::vector<std::string>& sensorModelNames();
 
 }  // namespace simp::localization

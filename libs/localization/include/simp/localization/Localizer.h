@@ -31,7 +31,7 @@ namespace simp::localization {
 /// by poses drawn from the detections (DetectionPoseSampler), `uniform_share` of them uniformly.
 struct SensorResettingParams {
     double global_fraction = 0.02;    ///< while searching
-    double lost_fraction = 0.3;       ///< while lost
+    double lost_fraction = 0.0;       ///< while lost (0: the challenger searches, the set keeps its track)
     double localized_fraction = 0.0;  ///< while localized
     double uniform_share = 0.2;       ///< of the injected particles, this share uniform over free space
     DetectionPoseSamplerParams sampler;

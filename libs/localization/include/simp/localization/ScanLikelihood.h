@@ -10,6 +10,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <simp/io/OptionTable.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <cstddef>
@@ -35,6 +36,8 @@ struct LidarModelOptions {
     /// of the scan grid; `lidar` never uses them (plain LiDAR MCL on the floor plan).
     bool map_objects = true;
 
+    /// The declaration of every key (section [LidarModel]).
+    static const io::OptionTable<LidarModelOptions>& table();
     /// Reads [section]; absent keys keep the defaults. \throw std::invalid_argument naming section and key.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section = "LidarModel");
 };

@@ -2,9 +2,11 @@
 /// \file MappingOptions.h
 /// Every threshold of the object map construction (paper Sec. "3D Semantic Map
 /// Construction"), loadable from an MRPT .ini section (config_ini/mapping.ini documents
-/// each key, its unit and its source).
+/// each key, its unit and its source). Each key is declared once, in table(): loading, range
+/// checks and the dump derive from it.
 
 #include <mrpt/config/CLoadableOptions.h>
+#include <simp/io/OptionTable.h>
 #include <simp/mapping/WallAlignment.h>
 
 #include <map>
@@ -195,6 +197,8 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// \throw std::invalid_argument naming the key for a malformed or out-of-range value.
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
     void dumpToTextStream(std::ostream& out) const override;
+    /// The declaration of every key (section [mapping]): loading, checks and the dump derive from it.
+    static const io::OptionTable<MappingOptions>& table();
 
     /// \throw std::invalid_argument naming the field when a value is out of its range.
     void validate() const;

@@ -5,6 +5,7 @@
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/math/TPose2D.h>
+#include <simp/io/OptionTable.h>
 #include <simp/maps/ConfidenceThresholds.h>
 #include <simp/maps/ObjectMapInserter.h>
 #include <simp/maps/SensorModel.h>
@@ -56,6 +57,8 @@ class CObjectMap : public mrpt::maps::CMetricMap {
      * maps: changes are picked up at the next likelihood evaluation (the precomputed rasters
      * are rebuilt when a parameter they depend on changed). */
     struct TLikelihoodOptions : public mrpt::config::CLoadableOptions {
+        /// The declaration of every key (CObjectMap_options.cpp): loading, checks and the dump.
+        static const io::OptionTable<TLikelihoodOptions>& table();
         void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
         void dumpToTextStream(std::ostream& out) const override;
 
@@ -166,7 +169,9 @@ class CObjectMap : public mrpt::maps::CMetricMap {
     std::string asString() const override;
     /// @}
 
-    /// RGB colour (0..255) of a class id: simp::obs::classColorRgb, the palette of every picture.
+    /// RGB colour (0..255) of a class id of the default class list (obs::defaultClassNames()):
+    /// obs::classColorRgb(class_id). The pictures colour a class by its name, so for a map with its
+    /// own class list use obs::classColorRgb(class_id, data().class_names) instead.
     static std::array<std::uint8_t, 3> classColor(int class_id);
 
     MAP_DEFINITION_START(CObjectMap)

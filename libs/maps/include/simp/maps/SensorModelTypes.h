@@ -7,6 +7,7 @@
 #include <simp/maps/ObjectProbabilityMap.h>
 
 #include <string>
+#include <vector>
 
 namespace simp::maps {
 
@@ -18,7 +19,10 @@ enum class SensorModelType {
     O      ///< O-MCL: footprint overlap of Eq. iouscore only (no noise model)
 };
 
-/// "simp" | "edt" | "d" | "o" (case-insensitive); throws std::invalid_argument listing the valid names.
+/// The name of every SensorModelType, in the enum's order ("simp", "edt", "d", "o"): the one list
+/// the parser, the .ini checks and simp-localize's --method derive from.
+const std::vector<std::string>& sensorModelTypeNames();
+/// A name of sensorModelTypeNames() (case-insensitive); throws std::invalid_argument listing them.
 SensorModelType parseSensorModelType(const std::string& name);
 /// Lower-case name, as parsed.
 std::string toString(SensorModelType type);

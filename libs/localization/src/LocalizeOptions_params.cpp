@@ -1,0 +1,113 @@
+/// \file LocalizeOptions_params.cpp
+/// The keys of [State], [DetectionNovelty], [SensorResetting], [HypothesisSearch], [Challenger] and
+/// one declaration per key (io::OptionTable), in the order of the old loaders.
+#include <simp/localization/LocalizeOptions.h>
+#include <simp/localization/Localizer.h>
+
+namespace simp::localization {
+namespace {
+using io::ValueRange;
+const ValueRange kNonNegative = ValueRange::atLeast(0);
+const ValueRange kFraction = ValueRange::between(0, 1);
+const ValueRange kCount = ValueRange::between(1, 1e6);
+}  // namespace
+
+const io::OptionTable<StateParams>& stateParamsTable() {
+    using O = StateParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("State")
+            .integer("fit_window", &O::fit_window, kCount, "detections kept for the fit (the last ones)")
+            .number("fit_max_age_s", &O::fit_max_age_s, "s", ValueRange::positive(), "... and not older than this")
+            .integer("fit_min_detections", &O::fit_min_detections, kCount, "fewer in the window: the fit says nothing")
+            .number("explained_ratio", &O::explained_ratio, "", ValueRange::positive(), "explained: p(z|m,x) >= this x eta")
+            .number("localized_min_fit", &O::localized_min_fit, "", kFraction, "localized needs at least this fit ...")
+            .number("localized_min_weight", &O::localized_min_weight, "", kFraction, "... this cluster weight fraction ...")
+            .number("localized_max_std_m", &O::localized_max_std_m, "m", ValueRange::positive(), "... a cluster position spread under this ...")
+            .integer("localized_min_updates", &O::localized_min_updates, kCount, "... over this many consecutive updates with detections")
+            .integer("lost_window", &O::lost_window, kCount, "the lost test looks at this many last detections ...")
+            .number("lost_max_fit", &O::lost_max_fit, "", kFraction, "localized -> lost when their fit falls to this ...")
+            .number("lost_min_weight", &O::lost_min_weight, "", kFraction, "... or the cluster weight under this ...")
+            .number("rival_margin", &O::rival_margin, "nats", kNonNegative, "localized needs the estimate to beat every distinct pose by this")
+            .number("rival_lost_margin", &O::rival_lost_margin, "nats", ValueRange::positive(), "... or a distinct pose explains the window better by this")
+            .number("object_radius_m", &O::object_radius_m, "m", kNonNegative, "> 0: the window counts objects of this radius, not detections")
+            .rule("fit_min_detections", [](const O& o) { return o.fit_min_detections <= o.fit_window; }, "be <= fit_window")
+            .rule("lost_window", [](const O& o) { return o.lost_window <= o.fit_window; }, "be <= fit_window")
+            .rule("lost_max_fit", [](const O& o) { return o.lost_max_fit < o.localized_min_fit; }, "be smaller than localized_min_fit");
+    return t;
+}
+
+const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable() {
+    using O = DetectionNoveltyParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("DetectionNovelty")
+            .number("decorrelation_distance_m", &O::decorrelation_distance_m, "m", kNonNegative,
+                    "robot travel after which a detection's error is new; 0 = off")
+            .number("min_weight", &O::min_weight, "", ValueRange::aboveUpTo(0, 1), "weight of an immediate repeat")
+            .number("track_radius_m", &O::track_radius_m, "m", ValueRange::positive(), "same class within this distance = same object")
+            .number("track_timeout_s", &O::track_timeout_s, "s", ValueRange::positive(), "a track not seen for this long is forgotten");
+    return t;
+}
+
+const io::OptionTable<SensorResettingParams>& resettingParamsTable() {
+    using O = SensorResettingParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("SensorResetting")
+            .number("global_fraction", &O::global_fraction, "", kFraction, "particles replaced per update while searching")
+            .number("lost_fraction", &O::lost_fraction, "", kFraction, "... while lost")
+            .number("localized_fraction", &O::localized_fraction, "", kFraction, "... while localized")
+            .number("uniform_share", &O::uniform_share, "", kFraction, "of the injected particles, this share uniform over free space")
+            .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", kNonNegative,
+                    "spread of a drawn position about the exact fit")
+            .number("heading_std_rad", [](auto& o) -> auto& { return o.sampler.heading_std_rad; }, "rad", kNonNegative,
+                    "spread of a drawn heading")
+            .number("square_ratio", [](auto& o) -> auto& { return o.sampler.square_ratio; }, "", kFraction,
+                    "footprints with short / long side >= this are square (heading ambiguous by pi/2)");
+    return t;
+}
+
+const io::OptionTable<HypothesisSearchParams>& searchParamsTable() {
+    using O = HypothesisSearchParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("HypothesisSearch")
+            .flag("enabled", &O::enabled, "search distinct poses that explain the fit window")
+            .integer("min_window_detections", &O::min_window_detections, kCount, "fewer detections in the window: no search")
+            .integer("max_candidates", &O::max_candidates, kCount, "exact fits scored per search (the first ones)")
+            .integer("refine_top", &O::refine_top, kCount, "best distinct candidates refined by a local grid search")
+            .number("refine_step_m", &O::refine_step_m, "m", ValueRange::positive(), "first grid step; halved once")
+            .number("refine_step_rad", &O::refine_step_rad, "rad", ValueRange::positive(), "first grid step; halved once")
+            .number("distinct_distance_m", &O::distinct_distance_m, "m", ValueRange::positive(), "poses farther apart than this ...")
+            .number("distinct_heading_rad", &O::distinct_heading_rad, "rad", ValueRange::positive(), "... or turned more than this are distinct")
+            .integer("max_hypotheses", &O::max_hypotheses, kCount, "distinct poses kept")
+            .flag("while_global", &O::while_global, "also search while global")
+            .flag("while_localized", &O::while_localized, "also search while localized (rival test for lost) ...")
+            .number("check_period_s", &O::check_period_s, "s", kNonNegative, "... at most this often; always while lost");
+    return t;
+}
+
+const io::OptionTable<ChallengerParams>& challengerParamsTable() {
+    using O = ChallengerParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("Challenger")
+            .flag("enabled", &O::enabled, "a second particle set searches globally while lost")
+            .number("win_margin", &O::win_margin, "nats", kNonNegative, "it replaces the current set when it explains the window better by this")
+            .number("agree_distance_m", &O::agree_distance_m, "m", kNonNegative, "... or is localized this close to the current estimate")
+            .number("reset_fraction", &O::reset_fraction, "", kFraction, "of its particles reset from the detections per update")
+            .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)");
+    return t;
+}
+
+void loadStateParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, StateParams& p) { stateParamsTable().load(cfg, s, p); }
+void loadNoveltyParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, DetectionNoveltyParams& p) {
+    noveltyParamsTable().load(cfg, s, p);
+}
+void loadResettingParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, SensorResettingParams& p) {
+    resettingParamsTable().load(cfg, s, p);
+}
+void loadSearchParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, HypothesisSearchParams& p) {
+    searchParamsTable().load(cfg, s, p);
+}
+void loadChallengerParams(const mrpt::config::CConfigFileBase& cfg, const std::string& s, ChallengerParams& p) {
+    challengerParamsTable().load(cfg, s, p);
+}
+
+}  // namespace simp::localization
