@@ -5,6 +5,7 @@
 // BoundedArchive::read() recognises every header MRPT reads, at any depth and offset.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include "RawlogBytes.h"
 #include "common/UnderAsan.h"
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -26,17 +27,11 @@
 #include <iterator>
 
 using ::testing::HasSubstr;
-using Bytes = std::vector<std::uint8_t>;
+using simp_test::Bytes;
+using simp_test::bytesOf;
+using simp_test::readError;
 
 namespace {
-
-Bytes bytesOf(const mrpt::serialization::CSerializable& o) {
-    mrpt::io::CMemoryStream buf;
-    auto a = mrpt::serialization::archiveFrom(buf);
-    a << o;
-    const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-    return Bytes(p, p + buf.getTotalBytesCount());
-}
 
 void append(Bytes& b, const Bytes& more) { b.insert(b.end(), more.begin(), more.end()); }
 
@@ -80,17 +75,6 @@ Bytes validFrame() {
     mrpt::obs::CSensoryFrame sf;
     sf.insert(o);
     return bytesOf(sf);
-}
-
-std::string readError(const Bytes& b) {
-    mrpt::io::CMemoryStream in;
-    in.assignMemoryNotOwn(b.data(), b.size());
-    try {
-        simp::obs::readRawlog(in, b.size(), "hostile.rawlog");
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
 }
 
 long peakRssKb() {

@@ -3,6 +3,7 @@
 // with a message naming the entry and the field.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include "RawlogBytes.h"
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -23,17 +24,11 @@
 
 using ::testing::HasSubstr;
 using simp::obs::CObservationObjects3D;
-using Bytes = std::vector<std::uint8_t>;
+using simp_test::Bytes;
+using simp_test::bytesOf;
+using simp_test::readError;
 
 namespace {
-
-Bytes bytesOf(const mrpt::serialization::CSerializable& o) {
-    mrpt::io::CMemoryStream buf;
-    auto a = mrpt::serialization::archiveFrom(buf);
-    a << o;
-    const auto* p = static_cast<const std::uint8_t*>(buf.getRawBufferData());
-    return Bytes(p, p + buf.getTotalBytesCount());
-}
 
 /// A sensory frame holding one observation with one detection of confidence 0.3125
 /// (exact in float, found by its bytes) and a label "CAM_X".
@@ -69,17 +64,6 @@ void put(Bytes& b, std::size_t at, T v) {
 }
 
 /// Reads `b` as a rawlog from memory; returns the error message ("" when accepted).
-std::string readError(const Bytes& b) {
-    mrpt::io::CMemoryStream in;
-    in.assignMemoryNotOwn(b.data(), b.size());
-    try {
-        simp::obs::readRawlog(in, b.size(), "hostile.rawlog");
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
-}
-
 std::size_t confidenceAt(const Bytes& b) {
     const float c = 0.3125f;
     return find(b, &c, sizeof c);
