@@ -61,21 +61,8 @@ Bytes comment(std::size_t n) {
     return bytesOf(c);
 }
 
-/// A frame with one 3D-object observation: the valid entry that follows the hostile one.
-Bytes validFrame() {
-    auto o = simp::obs::CObservationObjects3D::Create();
-    o->sensorLabel = "CAM_X";
-    o->timestamp = mrpt::Clock::fromDouble(1.0);
-    simp::obs::Detection3D d;
-    d.class_id = 1;
-    d.confidence = 0.5f;
-    d.box_in_camera.center = {0.5, 0.25, 3.0};
-    d.box_in_camera.size = {1.0, 0.75, 0.5};
-    o->addDetection(d);
-    mrpt::obs::CSensoryFrame sf;
-    sf.insert(o);
-    return bytesOf(sf);
-}
+/// The valid entry that follows the hostile one.
+Bytes validFrame() { return simp_test::oneDetectionFrame(0.5f); }
 
 long peakRssKb() {
     rusage u{};

@@ -26,30 +26,11 @@ using ::testing::HasSubstr;
 using simp::obs::CObservationObjects3D;
 using simp_test::Bytes;
 using simp_test::bytesOf;
+using simp_test::oneDetectionFrame;
 using simp_test::readError;
 
 namespace {
 
-/// A sensory frame holding one observation with one detection of confidence 0.3125
-/// (exact in float, found by its bytes) and a label "CAM_X".
-Bytes oneDetectionFrame(bool with_intrinsics = false) {
-    auto o = CObservationObjects3D::Create();
-    o->sensorLabel = "CAM_X";
-    if (with_intrinsics) {
-        mrpt::img::TCamera K;
-        K.setIntrinsicParamsFromValues(380, 380, 320, 240);
-        o->setIntrinsics(K);
-    }
-    simp::obs::Detection3D d;
-    d.class_id = 1;
-    d.confidence = 0.3125f;
-    d.box_in_camera.center = {0.5, 0.25, 3.0};
-    d.box_in_camera.size = {1.0, 0.75, 0.5};
-    o->addDetection(d);
-    mrpt::obs::CSensoryFrame sf;
-    sf.insert(o);
-    return bytesOf(sf);
-}
 
 std::size_t find(const Bytes& b, const void* needle, std::size_t n) {
     const auto* p = static_cast<const std::uint8_t*>(needle);
@@ -71,7 +52,7 @@ std::size_t confidenceAt(const Bytes& b) {
 
 }  // namespace
 
-TEST(HostileObservation, TheUnmodifiedFrameReads) { EXPECT_EQ(readError(oneDetectionFrame(true)), ""); }
+TEST(HostileObservation, TheUnmodifiedFrameReads) { EXPECT_EQ(readError(oneDetectionFrame(0.3125f, true)), ""); }
 
 TEST(HostileObservation, HugeDetectionCountFailsFastWithoutAllocating) {
     auto b = oneDetectionFrame();
@@ -129,11 +110,11 @@ TEST(HostileObservation, BoolBytesMustBeZeroOrOne) {
 }
 
 TEST(HostileObservation, CameraNameLengthAndDistortionByteAreChecked) {
-    auto b = oneDetectionFrame(true);
+    auto b = oneDetectionFrame(0.3125f, true);
     const std::size_t name_at = find(b, "camera1", 7);  // TCamera's default cameraName
     put<std::uint32_t>(b, name_at - 4, 0xFFFFFF00u);
     EXPECT_THAT(readError(b), HasSubstr("intrinsics', cameraName: string length"));
-    auto c = oneDetectionFrame(true);
+    auto c = oneDetectionFrame(0.3125f, true);
     c[name_at + 7] = 9;  // the distortion model byte (TCamera v6)
     EXPECT_THAT(readError(c), HasSubstr("distortion model byte = 9"));
 }
