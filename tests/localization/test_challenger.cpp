@@ -11,6 +11,7 @@
 #include <simp/localization/RawlogSequence.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -129,4 +130,28 @@ TEST(Challenger, AFalseLostNeverHandsTheTrackToIt) {
     EXPECT_EQ(rec.state, LocalizationState::Localized);
     EXPECT_EQ(loc.challengersWon(), 0u);
     EXPECT_LT(translationError(rec.estimate, sc.groundtruth[std::min(back + 149, seq.frames.size() - 1)].pose), 0.3);
+}
+
+TEST(Challenger, SearchingThePlacesOfTheWindowFindsTheNewPlaceAndOnlyUnambiguously) {
+    // reset_by_fit and hypothesis_search: the challenger's resetting draws about the places that
+    // explain the detections since `lost` and fades once its estimate explains them; it becomes
+    // `localized` only when no other place explains them about as well.
+    LocalizerOptions opts = challengerOnlyOptions(true);
+    opts.challenger.reset_by_fit = true;
+    opts.challenger.hypothesis_search = true;
+    const KidnapRun searched = runKidnap(opts, 20.0, 30.0);
+    EXPECT_LE(searched.lost_after, 5.0);
+    ASSERT_GE(searched.localized_after, 0.0) << "never localized again";
+    EXPECT_LE(searched.localized_after, 20.0);
+    EXPECT_LT(searched.worst_error_localized_m, 0.3);
+    EXPECT_EQ(searched.won, 1u);
+    // The same run with a challenger that searches from the current frame alone (the eleventh
+    // session's): it finds the place later (measured 13.8 s against 3.8 s).
+    LocalizerOptions frame_only = opts;
+    frame_only.challenger.reset_by_fit = false;
+    frame_only.challenger.hypothesis_search = false;
+    const KidnapRun plain = runKidnap(frame_only, 20.0, 30.0);
+    std::printf("kidnap: localized again after %.1f s with the search, %.1f s without\n", searched.localized_after,
+                plain.localized_after);
+    EXPECT_TRUE(plain.localized_after < 0 || plain.localized_after > searched.localized_after);
 }

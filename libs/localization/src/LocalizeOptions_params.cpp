@@ -92,6 +92,8 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
             .number("win_margin", &O::win_margin, "nats", kNonNegative, "it replaces the current set when it explains the window better by this")
             .number("agree_distance_m", &O::agree_distance_m, "m", kNonNegative, "... or is localized this close to the current estimate")
             .number("reset_fraction", &O::reset_fraction, "", kFraction, "of its particles reset from the detections per update")
+            .flag("reset_by_fit", &O::reset_by_fit, "reset_fraction x the share of the window its estimate leaves unexplained")
+            .flag("hypothesis_search", &O::hypothesis_search, "until localized: reset about the places that explain the detections since lost best; localized only when no other place explains them as well")
             .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)");
     return t;
 }

@@ -36,6 +36,27 @@ double standardNormalQuantile(double p) {
     return 0.5 * (lo + hi);
 }
 
+HypothesisSearchParams alwaysEnabled(HypothesisSearchParams p) {
+    p.enabled = true;
+    return p;
+}
+
+/// `count` poses about `targets` in equal shares (position_std_m, heading_std_rad of the sampler),
+/// those in the free space.
+std::vector<mrpt::math::TPose2D> drawAbout(const std::vector<Hypothesis>& targets, std::size_t count,
+                                           const DetectionPoseSamplerParams& sp, const FreeSpace& free) {
+    auto& rng = mrpt::random::getRandomGenerator();
+    std::vector<mrpt::math::TPose2D> poses;
+    for (std::size_t j = 0; j < count; ++j) {
+        const auto& h = targets[j % targets.size()].pose;
+        const mrpt::math::TPose2D p(h.x + rng.drawGaussian1D(0.0, sp.position_std_m),
+                                    h.y + rng.drawGaussian1D(0.0, sp.position_std_m),
+                                    mrpt::math::wrapToPi(h.phi + rng.drawGaussian1D(0.0, sp.heading_std_rad)));
+        if (free.isFree(p.x, p.y)) poses.push_back(p);
+    }
+    return poses;
+}
+
 }  // namespace
 
 mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizerOptions::defaultPfOptions() {
@@ -130,6 +151,7 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_novelty(options.novelty),
       m_sampler(*m_map, *m_free, options.resetting.sampler),
       m_search(*m_map, m_sampler, options.search),
+      m_challenger_search(*m_map, m_sampler, alwaysEnabled(options.search)),
       m_fit(options.state),
       m_monitor(options.state) {
     m_pf.m_options = m_opts.pf;
@@ -201,7 +223,8 @@ std::size_t Localizer::injectFromDetections(ObjectMcl& mcl, LocalizationState st
                                             const std::vector<WeightedObservation>& observations) {
     const auto& r = m_opts.resetting;
     const bool challenger = &mcl != m_mcl.get();
-    const double fraction = challenger                             ? m_opts.challenger.reset_fraction
+    const double fraction = challenger ? m_opts.challenger.reset_fraction *
+                                             (m_opts.challenger.reset_by_fit ? m_challenger->unexplained : 1.0)
                             : state == LocalizationState::Global   ? r.global_fraction
                             : state == LocalizationState::Lost     ? r.lost_fraction
                                                                    : r.localized_fraction;
@@ -214,14 +237,9 @@ std::size_t Localizer::injectFromDetections(ObjectMcl& mcl, LocalizationState st
         // Around the places that explain the fit window best, in equal shares: the weighing that
         // follows decides between them.
         if (m_reset_targets.empty()) return 0;
-        const auto& sp = r.sampler;
-        for (std::size_t j = 0; j < count - n_uniform; ++j) {
-            const auto& h = m_reset_targets[j % m_reset_targets.size()].pose;
-            const mrpt::math::TPose2D p(h.x + rng.drawGaussian1D(0.0, sp.position_std_m),
-                                        h.y + rng.drawGaussian1D(0.0, sp.position_std_m),
-                                        mrpt::math::wrapToPi(h.phi + rng.drawGaussian1D(0.0, sp.heading_std_rad)));
-            if (m_free->isFree(p.x, p.y)) poses.push_back(p);
-        }
+        poses = drawAbout(m_reset_targets, count - n_uniform, r.sampler, *m_free);
+    } else if (challenger && !m_challenger->targets.empty()) {
+        poses = drawAbout(m_challenger->targets, count - n_uniform, r.sampler, *m_free);
     } else {
         poses = m_sampler.sample(observations, count - n_uniform, rng);
     }
@@ -252,6 +270,19 @@ void Localizer::searchHypotheses(double t_s, const std::vector<WeightedObservati
     const double estimate_ll = std::isnan(advantage) ? best : best - advantage;  // NaN: all near the estimate
     for (const auto& h : m_hypotheses)
         if (h.log_likelihood >= estimate_ll - m_opts.state.rival_margin) m_reset_targets.push_back(h);
+}
+
+void Localizer::seedChallenger(const std::vector<WeightedObservation>& observations) {
+    auto& ch = *m_challenger;
+    ch.places.clear();
+    ch.targets.clear();
+    if (!m_opts.challenger.hypothesis_search || ch.monitor.state() == LocalizationState::Localized) return;
+    ch.places = m_challenger_search.search(m_fit, observations, m_odometry);
+    // Only the places about as good as the best: the weighing that follows decides between them.
+    if (ch.places.empty()) return;
+    const double floor = ch.places.front().log_likelihood - m_opts.state.rival_margin;
+    for (const auto& h : ch.places)
+        if (h.log_likelihood >= floor) ch.targets.push_back(h);
 }
 
 void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::poses::CPose2D* motion,
@@ -316,6 +347,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const bool no_motion = m_first && m_pending.norm() == 0 && m_pending.phi() == 0;
         update(*m_mcl, m_monitor.state(), no_motion ? nullptr : &m_pending, all, rec);
         if (m_challenger) {
+            seedChallenger(all);
             StepRecord ignored;
             update(*m_challenger->mcl, m_challenger->monitor.state(), no_motion ? nullptr : &m_pending, all, ignored);
         }
@@ -373,7 +405,7 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     if (!c.enabled || state != LocalizationState::Lost) return false;
     const std::size_t n = c.particles > 0 ? c.particles : m_opts.experiment.particles_count;
     const auto start = [&] {
-        m_challenger.emplace(Challenger{makeFilter(), StateMonitor(m_opts.state), std::nullopt});
+        m_challenger.emplace(Challenger{makeFilter(), StateMonitor(m_opts.state), std::nullopt, 1.0, {}, {}});
         resetUniform(*m_challenger->mcl, n);
         ++m_challengers_started;
     };
@@ -384,7 +416,11 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     auto& ch = *m_challenger;
     ch.summary = summarizeParticles(*ch.mcl, m_opts.experiment);
     const auto ch_now = mrpt::poses::CPose2D(ch.summary->estimate) + m_pending;
-    const auto ch_fit = m_fit.evaluate(*m_map, ch_now, m_odometry, t_s);
+    auto ch_fit = m_fit.evaluate(*m_map, ch_now, m_odometry, t_s);
+    // A place elsewhere that explains the window about as well makes it ambiguous: not localized.
+    if (!ch.places.empty())
+        ch_fit.rival_advantage = m_challenger_search.rivalAdvantage(m_fit, ch.places, ch_now.asTPose(), m_odometry);
+    ch.unexplained = ch_fit.scored >= m_opts.state.fit_min_detections ? 1.0 - ch_fit.fraction : 1.0;
     ch.monitor.update(ch.summary->cluster_weight,
                       std::sqrt(ch.summary->cluster_cov(0, 0) + ch.summary->cluster_cov(1, 1)), ch_fit, had_detections);
     if (ch.monitor.state() == LocalizationState::Lost) {  // it settled on a wrong place: search again

@@ -51,6 +51,15 @@ struct ChallengerParams {
     double win_margin = 3.0;        ///< nats (log-likelihood of the fit window)
     double agree_distance_m = 1.0;  ///< closer to the current estimate than this: the same place
     double reset_fraction = 0.3;    ///< of its particles reset from the detections per update ([SensorResetting] draws)
+    /// true: the share reset is reset_fraction x the share of the fit window its estimate leaves
+    /// unexplained (reset_fraction until the window is scored): once it holds the right place the
+    /// resetting no longer takes the cluster weight that `localized` asks for
+    bool reset_by_fit = true;
+    /// true: until it is `localized`, a search of the places that explain the detections since
+    /// `lost` ([HypothesisSearch] scoring, whatever its `enabled`) runs at each update: its resetting
+    /// draws about the best of them instead of from the current frame alone, and it is `localized`
+    /// only when its estimate beats every other place by [State] rival_margin
+    bool hypothesis_search = true;
     std::size_t particles = 0;      ///< particles of the challenger (0: [LocalizationExperiment] particles_count)
 };
 
@@ -125,6 +134,8 @@ class Localizer {
     /// judges it after its updates, drops it when the state is `localized` again. True when the
     /// challenger replaced the current set (m_mcl, m_summary, m_monitor are then its own).
     bool challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_detections, LocalizationState before);
+    /// [Challenger] hypothesis_search: the places its resetting draws about at this update.
+    void seedChallenger(const std::vector<WeightedObservation>& observations);
     /// Runs the hypothesis search when due (m_hypotheses is empty otherwise).
     void searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations);
     std::size_t particleTarget(const ObjectMcl& mcl, LocalizationState state) const;
@@ -139,6 +150,9 @@ class Localizer {
         std::unique_ptr<ObjectMcl> mcl;
         StateMonitor monitor;
         std::optional<ParticleSummary> summary;
+        double unexplained = 1.0;  ///< share of the fit window its estimate does not explain
+        std::vector<Hypothesis> places;   ///< hypothesis_search: the distinct places found at this update
+        std::vector<Hypothesis> targets;  ///< those its resetting draws about (about as good as the best)
     };
     std::optional<Challenger> m_challenger;
     std::size_t m_challengers_started = 0, m_challengers_won = 0;
@@ -146,6 +160,7 @@ class Localizer {
     DetectionNovelty m_novelty;
     DetectionPoseSampler m_sampler;
     HypothesisSearch m_search;
+    HypothesisSearch m_challenger_search;  ///< [HypothesisSearch] parameters, always enabled
     std::vector<Hypothesis> m_hypotheses;  ///< of the current update (empty: not searched)
     std::vector<Hypothesis> m_reset_targets;  ///< those worth particles (about as good as the estimate or better)
     double m_last_search_s = -std::numeric_limits<double>::infinity();
