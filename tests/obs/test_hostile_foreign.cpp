@@ -95,7 +95,7 @@ TEST(ForeignClasses, EveryOtherObservationClassIsRefusedFromItsHeaderInBoundedMe
     ASSERT_GT(foreign.size(), 20u);  // MRPT 2.5 registers ~40 observation classes
     std::cout << foreign.size() << " observation classes refused\n";
     (void)readError(validThenFrameWith(hugeCountsObject("mrpt::obs::CObservationImage")));  // warm-up
-    const long base_kb = peakRssKb();
+    [[maybe_unused]] const long base_kb = peakRssKb();
     for (const auto* id : foreign) {
         const std::string cls = id->className;
         SCOPED_TRACE(cls);
@@ -200,7 +200,7 @@ TEST(ForeignClasses, EveryClassTheReadersUseStillReads) {
 
 TEST(ForeignClasses, SizesInTheClassesMrptReadsAreCheckedBeforeItsReaderRuns) {
     (void)readError(simp_test::oneDetectionFrame());  // warm-up
-    const long base_kb = peakRssKb();
+    [[maybe_unused]] const long base_kb = peakRssKb();
     {  // a comment text of 2^30 bytes (1.1 GB in MRPT's string reader, measured)
         mrpt::obs::CObservationComment c;
         c.text = std::string(1000, 'x');
@@ -279,12 +279,11 @@ TEST(ForeignClasses, EveryForgedCountInARawlogOfEveryReadClassKeepsMemoryBounded
     // As ReaderMemory.HostileCountsKeepPeakRssWithinLinearBoundOfFileSize (same bound, same reasons),
     // on a rawlog holding every class the readers let MRPT read: every 4-byte slot in turn set to a
     // huge, a signed-max and a large value, wherever it falls (counts, lengths, versions, names).
-#if SIMP_UNDER_ASAN
-    GTEST_SKIP() << "ASan's quarantine keeps freed memory resident (see ReaderMemory)";
-#endif
+    // Under ASan the reads still run (memory errors in the checks are findings), the RSS bound does not
+    // apply: ASan's quarantine keeps freed memory resident (see ReaderMemory).
     const Bytes valid = everyClassRawlog();
     ASSERT_EQ(readError(valid), "");  // warm-up
-    const long base_kb = peakRssKb();
+    [[maybe_unused]] const long base_kb = peakRssKb();
     int rejected = 0, reads = 0;
     for (const std::uint32_t value : {0xFFFFFFFFu, 0x7FFFFFFFu, 0x00010000u})
         for (std::size_t at = 0; at + 4 <= valid.size(); ++at) {
@@ -293,9 +292,11 @@ TEST(ForeignClasses, EveryForgedCountInARawlogOfEveryReadClassKeepsMemoryBounded
             rejected += readError(bytes).empty() ? 0 : 1;
             ++reads;
         }
+#if !SIMP_UNDER_ASAN
     const long grown_kb = peakRssKb() - base_kb;
     EXPECT_LE(grown_kb, static_cast<long>(64 * valid.size() / 1024) + 8 * 1024)
         << "file " << valid.size() << " bytes, " << reads << " hostile reads";
+#endif
     // Fewer are rejected than in ReaderMemory's file: a third of this one is payload where any value
     // reads (181 ranges and their validity bytes, doubles of poses and boxes); measured 4254 of 10605.
     EXPECT_GT(rejected, reads / 3) << rejected << " of " << reads << " rejected";

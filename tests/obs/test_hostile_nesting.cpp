@@ -106,7 +106,7 @@ TEST(HostileNesting, HugeCountNestedBeyond64KBIsRejectedInBoundedMemory) {
     std::ifstream f(saved, std::ios::binary);
     EXPECT_EQ(Bytes(std::istreambuf_iterator<char>(f), {}), b) << saved << " is not the input of this test";
     (void)readError(frameWithDeepNestedCount(0));  // warm-up: MRPT's tables, stream buffers
-    const long base_kb = peakRssKb();
+    [[maybe_unused]] const long base_kb = peakRssKb();
     const auto start = std::chrono::steady_clock::now();
     const std::string err = readError(b);
     EXPECT_THAT(err, HasSubstr("entry 0"));
@@ -188,7 +188,7 @@ TEST(HostileNesting, RangeScanSizesAreCheckedBeforeMrptResizes) {
     std::memcpy(&n, ok.data() + n_at, 4);
     ASSERT_EQ(n, 181u) << "the scan size is not where MRPT 2.5 writes it";
     (void)readError(ok);  // warm-up
-    const long base_kb = peakRssKb();
+    [[maybe_unused]] const long base_kb = peakRssKb();
     Bytes big = ok;
     const std::uint32_t huge = 1u << 26;
     std::memcpy(big.data() + n_at, &huge, 4);
