@@ -23,7 +23,6 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <iostream>
@@ -33,19 +32,13 @@
 using ::testing::HasSubstr;
 using simp_test::Bytes;
 using simp_test::bytesOf;
+using simp_test::append;
+using simp_test::peakRssKb;
 using simp_test::readError;
 
 namespace {
 
-void append(Bytes& b, const Bytes& more) { b.insert(b.end(), more.begin(), more.end()); }
-
 void putU32(Bytes& b, std::size_t at, std::uint32_t v) { std::memcpy(b.data() + at, &v, 4); }
-
-long peakRssKb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;  // kilobytes on Linux
-}
 
 /// Where `text` starts in `b` (the first time from `from` on), or npos.
 std::size_t find(const Bytes& b, const std::string& text, std::size_t from = 0) {

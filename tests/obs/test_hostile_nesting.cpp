@@ -16,7 +16,6 @@
 #include <mrpt/serialization/CArchive.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/RawlogReader.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
@@ -29,11 +28,11 @@
 using ::testing::HasSubstr;
 using simp_test::Bytes;
 using simp_test::bytesOf;
+using simp_test::append;
+using simp_test::peakRssKb;
 using simp_test::readError;
 
 namespace {
-
-void append(Bytes& b, const Bytes& more) { b.insert(b.end(), more.begin(), more.end()); }
 
 void appendU32(Bytes& b, std::uint32_t v) {
     b.resize(b.size() + 4);
@@ -63,12 +62,6 @@ Bytes comment(std::size_t n) {
 
 /// The valid entry that follows the hostile one.
 Bytes validFrame() { return simp_test::oneDetectionFrame(0.5f); }
-
-long peakRssKb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;  // kilobytes on Linux
-}
 
 /// A frame whose first observation is a 100 KB comment and whose second is a sensory frame claiming
 /// `count` observations: the nested header lies 100 KB into the entry, beyond the old 64 KB scan.
