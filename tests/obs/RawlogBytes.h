@@ -1,6 +1,6 @@
 /// \file RawlogBytes.h
 /// Rawlog bytes for the hostile-input tests: an object serialized as MRPT writes it, a valid frame, and the error
-/// that reading a byte string as a rawlog gives (empty when it reads).
+/// that reading a byte string as a rawlog gives (empty when it reads); the process's peak RSS.
 #pragma once
 
 #include <mrpt/img/TCamera.h>
@@ -10,6 +10,7 @@
 #include <mrpt/serialization/CSerializable.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/RawlogReader.h>
+#include <sys/resource.h>
 
 #include <cstdint>
 #include <exception>
@@ -19,6 +20,15 @@
 namespace simp_test {
 
 using Bytes = std::vector<std::uint8_t>;
+
+inline void append(Bytes& b, const Bytes& more) { b.insert(b.end(), more.begin(), more.end()); }
+
+/// Peak resident set size of this process so far, in KB (Linux).
+inline long peakRssKb() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss;
+}
 
 inline Bytes bytesOf(const mrpt::serialization::CSerializable& o) {
     mrpt::io::CMemoryStream buf;

@@ -9,11 +9,11 @@
 // An allocation sized by a forged count instead of by the bytes left (the bug class of issue #14:
 // 1.7 GB from 922 bytes) exceeds the bound by orders of magnitude.
 #include <gtest/gtest.h>
+#include "RawlogBytes.h"
 #include "common/UnderAsan.h"
 #include <mrpt/io/CMemoryStream.h>
 #include <simp/obs/ExampleRawlog.h>
 #include <simp/obs/RawlogReader.h>
-#include <sys/resource.h>
 
 #include <cstdint>
 #include <cstring>
@@ -22,13 +22,9 @@
 #include <iterator>
 #include <vector>
 
-namespace {
+using simp_test::peakRssKb;
 
-long peakRssKb() {
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return u.ru_maxrss;  // kilobytes on Linux
-}
+namespace {
 
 bool readsCleanly(const std::vector<std::uint8_t>& bytes) {
     mrpt::io::CMemoryStream in;

@@ -189,6 +189,7 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
     // Through a BoundedArchive, as simp::obs::readRawlog: counts in the file are checked against the
     // bytes it still holds, and MRPT's own readers are guarded where they allocate what a file says.
     obs::BoundedArchive arch(in, size.bytes, path);
+    arch.allowOnly(obs::rawlogClasses());  // other classes' MRPT readers trust the file's sizes
 
     RawlogSequence seq;
     FrameBuilder builder(seq, path);
@@ -197,6 +198,8 @@ RawlogSequence loadRawlogSequence(const std::string& path, RawlogTail tail) {
         const std::uint64_t entry_start = arch.bytesRead();
         try {
             obj = arch.readObjectGuarded(obs::rawlogEntryClasses());
+        } catch (const obs::UnreadClassError& e) {  // not corruption, and not a tail cut short
+            throw std::runtime_error("rawlog '" + path + "': entry " + std::to_string(seq.entries) + ": " + e.what());
         } catch (const std::exception& e) {
             // A tail cut short (no entry after the failed one) of a file still being written.
             if (tail == RawlogTail::AllowTruncated && !seq.frames.empty() && !size.corrupt && isLastEntry(path, entry_start)) {

@@ -6,6 +6,8 @@
 #include <mrpt/rtti/CObject.h>
 #include <simp/obs/BoundedArchive.h>
 
+#include "MrptClassGuards.h"
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -18,10 +20,9 @@ namespace simp::obs {
 
 namespace {
 
-/// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300, and a
-/// file cannot ask for more than this in one entry (MRPT 2.5 allocates 32 bytes per particle
-/// before any check).
-constexpr std::uint32_t kMaxThrunParticles = 100000;
+/// Thrun motion-model particles all robot movements of one entry may draw together (MRPT's default is
+/// 300 per movement; MRPT 2.5 allocates 32 bytes per particle before any check).
+constexpr std::uint64_t kMaxThrunParticles = 100000;
 /// A real collection holds 1-3 actions.
 constexpr std::uint32_t kMaxActionsPerCollection = 64;
 /// Each element of a container is an object: name length byte, >= 1 name byte, end flag.
@@ -29,16 +30,15 @@ constexpr std::uint64_t kMinObjectBytes = 3;
 /// Stack MRPT's recursive readers may use below the start of an entry: a valid entry nests 3-4
 /// objects deep (a few KB); 8 MB is a thread's whole stack on Linux.
 constexpr std::size_t kMaxNestingStackBytes = 512 * 1024;
-/// Bytes a robot movement's motion model spans after its version (method, CPose2D header of <= 121
-/// bytes and data, model, six floats, particle count): what onHeader() peeks.
-constexpr std::size_t kMovementPeekBytes = 4 + 1 + 120 + 1 + 24 + 1 + 4 + 24 + 4 + 8;
+
+std::string shortName(const std::string& name) {
+    const auto sep = name.rfind("::");
+    return sep == std::string::npos ? name : name.substr(sep + 2);
+}
 
 }  // namespace
 
-bool resolvesTo(const std::string& stored, const std::string& cls) {
-    const auto sep = stored.rfind("::");
-    return (sep == std::string::npos ? stored : stored.substr(sep + 2)) == cls;
-}
+bool resolvesTo(const std::string& stored, const std::string& cls) { return shortName(stored) == cls; }
 
 BoundedArchive::BoundedArchive(mrpt::io::CStream& in, std::uint64_t size_bytes, std::string description)
     : m_in(in), m_size(size_bytes), m_description(std::move(description)), m_entry_left(size_bytes) {}
@@ -100,75 +100,6 @@ const std::vector<std::uint8_t>& BoundedArchive::peek(std::size_t n) {
     return m_peeked;
 }
 
-namespace {
-
-std::uint32_t u32At(const std::vector<std::uint8_t>& b, std::size_t at) {
-    std::uint32_t v = 0;
-    std::memcpy(&v, b.data() + at, 4);  // little endian, as MRPT writes on x86/arm
-    return v;
-}
-
-/// The object header at `at` (MRPT 2.x: byte 0x80|length, then the name): its name, or nullopt if
-/// `at` holds no new-format header within `b`.
-std::optional<std::string> objectNameAt(const std::vector<std::uint8_t>& b, std::size_t at) {
-    if (at >= b.size() || !(b[at] & 0x80)) return std::nullopt;
-    const std::size_t len = b[at] & 0x7f;
-    if (len == 0 || at + 1 + len > b.size()) return std::nullopt;
-    return std::string(reinterpret_cast<const char*>(b.data() + at + 1), len);
-}
-
-/// Checks the motion model of a CActionRobotMovement2D whose data (after its version byte) starts
-/// at `at` in `b` (MRPT 2.5, versions 4-7): u32 estimation method (1: a pose PDF object follows,
-/// MRPT's reader segfaults on another class there); for odometry (0) a CPose2D object (header,
-/// version 0: three floats, 1: three doubles, end flag), u32 model selection (0 Gaussian; MRPT
-/// takes any other value as Thrun), six floats, u32 Thrun particle count. Returns the particles
-/// MRPT will draw. A movement cut by the end of `b` is left to MRPT's reader (end of file).
-std::uint64_t checkRobotMovement2D(const std::vector<std::uint8_t>& b, std::size_t at, const std::string& where) {
-    if (at + 4 > b.size()) return 0;
-    const std::uint32_t method = u32At(b, at);
-    at += 4;
-    if (method > 1)
-        throw std::invalid_argument(where + ": CActionRobotMovement2D estimation method " + std::to_string(method) +
-                                    " is neither 0 (odometry) nor 1 (scan matching) (corrupted file)");
-    const auto name = objectNameAt(b, at);
-    if (!name) {
-        if (at < b.size() && at + 1 + (b[at] & 0x7f) <= b.size())
-            throw std::invalid_argument(where + ": CActionRobotMovement2D: no object where its " +
-                                        (method == 1 ? "pose PDF" : "odometry CPose2D") + " belongs (corrupted file)");
-        return 0;
-    }
-    if (method == 1) {  // a pose PDF object follows; MRPT 2.5 crashes on any other object there
-        const auto sep = name->rfind("::");
-        if ((sep == std::string::npos ? *name : name->substr(sep + 2)).rfind("CPosePDF", 0) != 0)
-            throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + *name +
-                                        "' where a pose PDF belongs (corrupted file)");
-        return 0;
-    }
-    if (!resolvesTo(*name, "CPose2D"))
-        throw std::invalid_argument(where + ": CActionRobotMovement2D holds a '" + *name +
-                                    "' where its odometry CPose2D belongs (corrupted file)");
-    at += 1 + name->size();
-    if (at >= b.size()) return 0;
-    const std::uint8_t pose_version = b[at];
-    if (pose_version > 1)
-        throw std::invalid_argument(where + ": CActionRobotMovement2D: odometry CPose2D version " +
-                                    std::to_string(pose_version) + " is unknown (corrupted file)");
-    at += 1 + (pose_version == 0 ? 12 : 24) + 1;  // version, x y phi, end flag
-    if (at + 4 > b.size()) return 0;
-    const std::uint32_t model = u32At(b, at);
-    if (model > 1)
-        throw std::invalid_argument(where + ": CActionRobotMovement2D motion model " + std::to_string(model) +
-                                    " is neither 0 (Gaussian) nor 1 (Thrun) (corrupted file)");
-    if (model == 0 || at + 4 + 24 + 4 > b.size()) return 0;
-    const std::uint32_t particles = u32At(b, at + 4 + 24);
-    if (particles > kMaxThrunParticles)
-        throw std::invalid_argument(where + ": CActionRobotMovement2D asks for " + std::to_string(particles) +
-                                    " Thrun motion-model particles (at most " + std::to_string(kMaxThrunParticles) +
-                                    "; corrupted file)");
-    return particles;
-}
-
-}  // namespace
 
 namespace {
 
@@ -188,18 +119,27 @@ void BoundedArchive::fail(const std::string& what) {
     throw GuardAbort();
 }
 
+void BoundedArchive::failUnread(const std::string& name, std::uint64_t at) {
+    if (m_guard_error.empty()) m_guard_class = name;
+    fail("class " + name + " (" + std::to_string(at) + " bytes into the entry) is not read by simp: its MRPT reader " +
+         "would trust the sizes in the file, and an object's length is not stored, so it cannot be skipped " +
+         "(simp reads " + detail::rawlogClassesText() + "; to drop other sensors' observations see doc/bad-input.md, " +
+         "rawlog-edit --keep-label / --remove-label)");
+}
+
 void BoundedArchive::watch(const std::uint8_t* data, std::size_t len) {
-    static constexpr std::size_t kShortest = 13, kLongest = 120;  // "CSensoryFrame"; MRPT's maximum
-    if (len >= kShortest && len <= kLongest) {
+    static constexpr std::size_t kLongest = 120;  // MRPT's maximum name length
+    if (len >= 1 && len <= kLongest) {
         const bool new_format = m_last_len == 1 && (m_last_byte & 0x80) && (m_last_byte & 0x7fu) == len;
         const bool old_format = m_last_len == 3 && m_last_zeros && m_prev_len == 1 && m_prev_byte == len;
         if (new_format || old_format) {
-            // MRPT copies the name as a C string: a NUL inside the declared length ends it.
+            // MRPT copies the name as a C string (a NUL inside the declared length ends it) and resolves
+            // it ignoring the namespace; the same lookup here. Data that merely looks like a header
+            // names no registered class (or it is a forged header, and rejecting it is right).
             const auto* c = reinterpret_cast<const char*>(data);
             const std::string name(c, ::strnlen(c, len));
-            for (const char* cls :
-                 {"CActionCollection", "CSensoryFrame", "CActionRobotMovement2D", "CObservation2DRangeScan"})
-                if (resolvesTo(name, cls)) onHeader(cls, old_format, len + (old_format ? 4 : 1));
+            if (const auto* id = mrpt::rtti::findRegisteredClass(name))
+                onHeader(id, old_format, len + (old_format ? 4 : 1));
         }
     }
     m_prev_len = m_last_len;
@@ -209,18 +149,20 @@ void BoundedArchive::watch(const std::uint8_t* data, std::size_t len) {
     m_last_zeros = len == 3 && data[0] == 0 && data[1] == 0 && data[2] == 0;
 }
 
-void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size_t header_bytes) {
+void BoundedArchive::onHeader(const mrpt::rtti::TRuntimeClassId* id, bool old_format, std::size_t header_bytes) {
     // Called as MRPT has just read the class name: the version and the object's data follow.
     const std::uint64_t at = bytesRead() - header_bytes - m_entry_start;
+    if (!m_allowed.empty() && std::find(m_allowed.begin(), m_allowed.end(), id) == m_allowed.end())
+        failUnread(id->className, at);
+    const std::string cls = shortName(id->className);
     const std::string where = m_description + ": the " + cls + " " + std::to_string(at) + " bytes into the entry";
     const std::size_t vbytes = old_format ? 4 : 1;
-    const auto& b = peek(cls == "CActionRobotMovement2D" ? vbytes + kMovementPeekBytes : vbytes + 12 + 4);
-    if (b.size() < vbytes) return;  // cut by the end of the file: MRPT's reader says so
-    const std::uint32_t version = old_format ? u32At(b, 0) : b[0];
-    if (cls == "CActionRobotMovement2D") {
-        if (version < 4 || version > 7) return;
+    const bool container = id == CLASS_ID(mrpt::obs::CActionCollection) || id == CLASS_ID(mrpt::obs::CSensoryFrame);
+    if (!container) {
+        detail::Ahead ahead{[this](std::size_t n) -> const std::vector<std::uint8_t>& { return peek(n); }, bytesLeft(),
+                            vbytes};
         try {
-            m_entry_particles += checkRobotMovement2D(b, vbytes, where);
+            m_entry_particles += detail::checkObject(id, ahead, where);
         } catch (const std::invalid_argument& e) {
             fail(e.what());
         }
@@ -230,17 +172,16 @@ void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size
                  "; corrupted file)");
         return;
     }
-    if (cls == "CObservation2DRangeScan") {
-        if (version >= 6 && version <= 8) checkRangeScan(vbytes, where);
-        return;
-    }
+    const auto& b = peek(vbytes + 12 + 4);
+    if (b.size() < vbytes) return;  // cut by the end of the file: MRPT's reader says so
+    const std::uint32_t version = old_format ? detail::u32At(b, 0) : b[0];
     // Offset of the u32 element count in the object's data (MRPT 2.5 serializeFrom).
     std::size_t offset = 0;
     if (cls == "CActionCollection" && version == 0) offset = 0;
     else if (cls == "CSensoryFrame" && version <= 2) offset = version == 2 ? 0 : version == 1 ? 4 : 12;  // ID, time
     else return;
     if (b.size() < vbytes + offset + 4) return;  // truncated: MRPT's reader reports the end of file
-    const std::uint32_t n = u32At(b, vbytes + offset);
+    const std::uint32_t n = detail::u32At(b, vbytes + offset);
     const std::uint64_t left = bytesLeft() - (vbytes + offset + 4);
     if (n * kMinObjectBytes > left)
         fail(where + ": element count " + std::to_string(n) + " needs at least " +
@@ -259,38 +200,13 @@ void BoundedArchive::onHeader(const std::string& cls, bool old_format, std::size
              " bytes left in the file at the entry's start can hold (nested containers; corrupted file)");
 }
 
-void BoundedArchive::checkRangeScan(std::size_t at, const std::string& where) {
-    // MRPT 2.5 CObservation2DRangeScan versions 6-8: aperture (f32), rightToLeft (u8), maxRange (f32),
-    // sensorPose (a CPose3D object), u32 N, then it resizes three vectors to N (9 bytes each: a
-    // 348 KB rawlog with N = 2^26 took 696 MB), N ranges and N validity bytes, stdError (f32),
-    // timestamp (u64), beamAperture (f32), sensorLabel (u32 length, resized before it is read).
-    // Only the CPose3D version 3 MRPT 2.x writes (12 doubles) is located; others are left to MRPT.
-    const auto* b = &peek(at + 9 + 1 + 120 + 1 + 96 + 1 + 4);
-    std::size_t p = at + 9;
-    if (p >= b->size() || !((*b)[p] & 0x80)) return;
-    p += 1 + ((*b)[p] & 0x7f);                                  // the pose's name
-    if (p + 1 + 96 + 1 + 4 > b->size() || (*b)[p] != 3) return;  // version 3, its data, end flag, N
-    p += 1 + 96 + 1;
-    const std::uint32_t n = u32At(*b, p);
-    p += 4;
-    if (std::uint64_t{n} * 5 > bytesLeft() - p)
-        fail(where + ": " + std::to_string(n) + " ranges need " + std::to_string(std::uint64_t{n} * 5) +
-             " bytes but only " + std::to_string(bytesLeft() - p) + " remain in the file (corrupted or truncated)");
-    const std::size_t label_at = p + 5 * std::size_t{n} + 4 + 8 + 4;
-    b = &peek(label_at + 4);
-    if (label_at + 4 > b->size()) return;  // cut by the end of the file: MRPT's reader says so
-    const std::uint32_t label = u32At(*b, label_at);
-    if (label > bytesLeft() - (label_at + 4))
-        fail(where + ": sensor label of " + std::to_string(label) + " bytes, but only " +
-             std::to_string(bytesLeft() - (label_at + 4)) + " remain in the file (corrupted or truncated)");
-}
-
 mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded(
     const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases) {
     m_entry_start = bytesRead();
     m_entry_left = bytesLeft();
     m_entry_elements = m_entry_particles = 0;
     m_guard_error.clear();
+    m_guard_class.clear();
     m_stack_base = static_cast<const char*>(__builtin_frame_address(0));
     struct Reset {  // the depth check applies below this call only
         const char*& p;
@@ -299,6 +215,7 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readObjectGuarded(
     try {
         return readGuarded(entry_bases, 0);
     } catch (const std::exception&) {  // GuardAbort, or MRPT's wrapping of an earlier guard error
+        if (!m_guard_class.empty()) throw UnreadClassError(m_guard_error, m_guard_class);
         if (!m_guard_error.empty()) throw std::invalid_argument(m_guard_error);
         throw;
     }
@@ -338,6 +255,26 @@ mrpt::serialization::CSerializable::Ptr BoundedArchive::readGuarded(
                 throw std::invalid_argument(m_description + ": CActionCollection: end flag missing (corrupted file)");
             return obj;
         }
+        if (std::string(id->className) == "mrpt::obs::CSensoryFrame" && version >= 0 && version <= 2) {
+            // Read here, not by MRPT 2.5's CSensoryFrame::serializeFrom: that one stores whatever object an
+            // element is (a null one, or another class cast to a null observation) and, in version 0,
+            // dereferences each to set its time stamp (a segfault); the readers dereference them too.
+            // Each element must be an observation, checked from its header before it is created.
+            auto& frame = dynamic_cast<mrpt::obs::CSensoryFrame&>(*obj);
+            if (version < 2) (void)ReadAs<std::uint32_t>();  // ID, removed in version 2
+            std::optional<mrpt::Clock::time_point> t;
+            if (version == 0) t = mrpt::Clock::time_point(mrpt::Clock::duration(ReadAs<std::uint64_t>()));
+            const auto n = ReadAs<std::uint32_t>();  // bounded by onHeader()
+            for (std::uint32_t i = 0; i < n; ++i) {
+                const auto o = std::dynamic_pointer_cast<mrpt::obs::CObservation>(
+                    readGuarded({&mrpt::obs::CObservation::GetRuntimeClassIdStatic()}, depth + 1));
+                if (t) o->timestamp = *t;
+                frame.insert(o);
+            }
+            if (!old_format && ReadAs<std::uint8_t>() != 0x88)
+                throw std::invalid_argument(m_description + ": CSensoryFrame: end flag missing (corrupted file)");
+            return obj;
+        }
     }
     internal_ReadObject(obj.get(), class_name, old_format, version);
     return obj;
@@ -349,6 +286,8 @@ const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses() {
         &mrpt::obs::CObservation::GetRuntimeClassIdStatic()};
     return classes;
 }
+
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogClasses() { return detail::guardedRawlogClasses(); }
 
 std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& archive) {
     if (const auto* b = dynamic_cast<const BoundedArchive*>(&archive)) return b->bytesLeft();

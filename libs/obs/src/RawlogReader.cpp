@@ -86,6 +86,7 @@ std::vector<RawlogFrame> readRawlog(mrpt::io::CStream& in, std::uint64_t size_by
     // Every object is read through a BoundedArchive: our readers and the guards for MRPT's
     // vector-sizing readers compare the counts in the file with the bytes it still holds.
     BoundedArchive archive(in, size_bytes, name);
+    archive.allowOnly(rawlogClasses());  // other classes' MRPT readers trust the file's sizes
     Reader r;
     r.path = name;
     for (std::size_t entry = 0;; ++entry) {
@@ -93,6 +94,8 @@ std::vector<RawlogFrame> readRawlog(mrpt::io::CStream& in, std::uint64_t size_by
         mrpt::serialization::CSerializable::Ptr obj;
         try {
             obj = archive.readObjectGuarded(rawlogEntryClasses());
+        } catch (const UnreadClassError& e) {
+            r.fail(entry, e.what());
         } catch (const mrpt::serialization::CExceptionEOF& e) {
             r.fail(entry, std::string("file ends in the middle of an object (truncated): ") + e.what());
         } catch (const std::bad_alloc&) {

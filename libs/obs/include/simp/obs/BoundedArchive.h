@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,17 @@ struct TRuntimeClassId;
 }
 
 namespace simp::obs {
+
+/// An object of a class the reader does not let MRPT read (BoundedArchive::allowOnly), found from its
+/// header before MRPT created it; what() says which, where, and what the reader reads.
+class UnreadClassError : public std::invalid_argument {
+   public:
+    UnreadClassError(const std::string& what, std::string cls) : std::invalid_argument(what), m_class(std::move(cls)) {}
+    const std::string& className() const { return m_class; }
+
+   private:
+    std::string m_class;
+};
 
 class BoundedArchive : public mrpt::serialization::CArchive {
    public:
@@ -39,6 +51,14 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     mrpt::serialization::CSerializable::Ptr readObjectGuarded(
         const std::vector<const mrpt::rtti::TRuntimeClassId*>& entry_bases = {});
 
+    /// From now on every object header MRPT reads, at any depth, must name one of `classes` (exactly,
+    /// not a derived class), else readObjectGuarded() throws UnreadClassError before MRPT creates the
+    /// object: MRPT's readers of other classes size strings and vectors from the file (a forged
+    /// length: gigabytes), and MRPT's format stores no object length, so they cannot be skipped
+    /// unread. Only `classes` that the guards of MrptClassGuards.cpp check or the project reads
+    /// itself belong here (rawlogClasses()). Empty (the default): any class.
+    void allowOnly(std::vector<const mrpt::rtti::TRuntimeClassId*> classes) { m_allowed = std::move(classes); }
+
    protected:
     size_t write(const void* buf, size_t len) override;  ///< always throws: read only
     /// Every byte MRPT reads passes here, at any nesting depth: this is where object headers are
@@ -59,14 +79,14 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     /// anything is checked: counts against the bytes left (each alone, and all containers of the
     /// entry together, since nested ones claim the same bytes again), at most 64 actions per
     /// collection, at most 1e5 Thrun particles per entry, known motion models.
-    void onHeader(const std::string& cls, bool old_format, std::size_t header_bytes);
-    /// The scan size and sensor-label length of an MRPT 2D range scan (the one MRPT observation the
-    /// project writes, `simp-sim --lidar`) whose data starts `at` bytes into the bytes ahead.
-    void checkRangeScan(std::size_t at, const std::string& where);
+    /// Other classes: not allowed (allowOnly) is an error; else the checks of MrptClassGuards.h.
+    void onHeader(const mrpt::rtti::TRuntimeClassId* id, bool old_format, std::size_t header_bytes);
     [[noreturn]] void fail(const std::string& what);
+    /// fail() for a class not allowed, found `at` bytes into the entry.
+    [[noreturn]] void failUnread(const std::string& name, std::uint64_t at);
     /// readObjectGuarded() for an object that must derive from one of `bases` (empty: any class), checked
-    /// from its header before it is created; action collections are read here (MRPT 2.5's reader
-    /// dereferences a non-CAction element unchecked). `depth`: nesting level (0: a file entry).
+    /// from its header before it is created; action collections and sensory frames are read here (MRPT
+    /// 2.5's readers keep or dereference a null or wrong-class element unchecked). `depth`: nesting level (0: a file entry).
     mrpt::serialization::CSerializable::Ptr readGuarded(const std::vector<const mrpt::rtti::TRuntimeClassId*>& bases,
                                                         int depth);
 
@@ -85,6 +105,8 @@ class BoundedArchive : public mrpt::serialization::CArchive {
     // thrown inside its readers; this one is what the caller sees), the frame address of its start.
     std::uint64_t m_entry_start = 0, m_entry_left = 0, m_entry_elements = 0, m_entry_particles = 0;
     std::string m_guard_error;
+    std::string m_guard_class;  ///< set when the first guard error is a class not allowed
+    std::vector<const mrpt::rtti::TRuntimeClassId*> m_allowed;
     const char* m_stack_base = nullptr;
 };
 
@@ -101,6 +123,13 @@ std::optional<std::uint64_t> bytesLeftIn(const mrpt::serialization::CArchive& ar
 
 /// The classes a rawlog entry may have: CSensoryFrame, CActionCollection, CObservation (and derived).
 const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogEntryClasses();
+
+/// The classes the project's rawlog readers let MRPT read, at any depth (BoundedArchive::allowOnly):
+/// CSensoryFrame, CActionCollection, CActionRobotMovement2D, simp's CObservationObjects3D,
+/// CObservation2DRangeScan, CObservationOdometry, CObservationComment, and inside them CPose2D, CPose3D,
+/// CPosePDFGaussian(Inf), CMatrixF/D and TCamera; each with its sizes checked before MRPT reads it
+/// (doc/formats.md "Limits"). Other observations (images, IMU, GPS, point clouds, ...) are refused.
+const std::vector<const mrpt::rtti::TRuntimeClassId*>& rawlogClasses();
 
 /// Uncompressed size (bytes) of a plain or gzip-compressed file: the file size, or for a gzip
 /// file one streaming decompression pass (constant memory). \throw std::runtime_error naming

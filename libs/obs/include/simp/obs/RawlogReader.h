@@ -24,7 +24,9 @@ struct RawlogFrame {
 };
 
 /// Reads the whole file. Throws std::runtime_error("rawlog 'FILE': entry N: ...") on a missing,
-/// truncated or corrupted file; other observation types are skipped.
+/// truncated or corrupted file, and on an object of a class not in rawlogClasses() (BoundedArchive.h:
+/// MRPT's readers of other sensors' observations cannot be guarded nor skipped); 2D range scans,
+/// odometry observations and comments are read and not used.
 std::vector<RawlogFrame> readRawlog(const std::string& path);
 
 /// The same from a stream that delivers exactly `size_bytes` (uncompressed) bytes; `name` is
