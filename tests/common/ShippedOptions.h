@@ -37,6 +37,18 @@ std::vector<std::string> valueLines(const std::string& file, const std::string& 
     return lines;
 }
 
+/// The lines of `options` equal the pinned lines of `file` [section]: false, and `report` holds the lines
+/// to pin (or the difference) otherwise. Use: EXPECT_TRUE(matchesPinned(...)) << report.
+template <class Options>
+bool matchesPinned(const std::string& file, const simp::io::OptionTable<Options>& table, const Options& options, std::string& report) {
+    const auto expected = shippedValues(file, table.section());
+    const auto lines = valueLines(file, table.section(), table, options);
+    if (lines == expected && expected.size() == table.keys().size()) return true;
+    report = file + " [" + table.section() + "] should be pinned (tests/data/options/shipped_values.txt) as:\n";
+    for (const auto& l : lines) report += l + "\n";
+    return false;
+}
+
 /// The text of doc/NAME (its key tables are generated: OptionTable::markdown()).
 inline std::string docText(const std::string& name) {
     std::ifstream in(std::string(SIMP_SOURCE_DIR) + "/doc/" + name);

@@ -104,9 +104,9 @@ TEST(BatchVariants, DefaultNamesAreFileStemsAndKeysAreChecked) {
     const auto error = [](const std::string& keys) { return simp_test::errorOf([&] { load(keys); }); };
     std::string e = error("localize_config = a.ini\nlocalize_configs = b.ini c.ini");
     EXPECT_NE(e.find("[batch] localize_configs"), std::string::npos) << e;
-    EXPECT_NE(e.find("excludes [batch] localize_config"), std::string::npos) << e;
+    EXPECT_NE(e.find("must not be given with [batch] localize_config"), std::string::npos) << e;
     e = error("localize_configs = a.ini b.ini\nlocalize_config_names = one");
-    EXPECT_NE(e.find("[batch] localize_config_names': 1 names for 2"), std::string::npos) << e;
+    EXPECT_NE(e.find("[batch] localize_config_names: 1 names for 2"), std::string::npos) << e;
     e = error("localize_configs = x/a.ini y/a.ini");
     EXPECT_NE(e.find("two entries are named 'a'"), std::string::npos) << e;
     e = error("localize_config_names = p");

@@ -163,3 +163,23 @@ TEST(OptionTable, StrictWhateverTheSourceAndRulesNameTheKey) {
     EXPECT_EQ(errorOf([&] { rigTable().load(mrpt::config::CConfigFileMemory("[other]\nlo = 3\n"), "other", r); }),
               "[other] lo: must be smaller than hi");
 }
+
+TEST(OptionTable, DocumentationPrintsWholeBoundsExactlyAndNamesAnEmptyDefault) {
+    struct Seeded {
+        unsigned seed = 0;
+        std::string model;
+        double limit = 1;
+    };
+    const auto t = OptionTable<Seeded>("s")
+                       .integer("seed", &Seeded::seed, ValueRange::between(0, 4294967295.0), "random seed")
+                       .choice("model", &Seeded::model, {"", "a"}, "empty = the map's")
+                       .number("limit", &Seeded::limit, "", ValueRange::atMost(1), "at most one");
+    EXPECT_EQ(t.markdown(Seeded{}),
+              "| key | default | unit | allowed | meaning |\n|---|---|---|---|---|\n"
+              "| `seed` | 0 |  | in [0, 4294967295] | random seed |\n"
+              "| `model` | (empty) |  | '' or 'a' | empty = the map's |\n"
+              "| `limit` | 1 |  | <= 1 | at most one |\n");
+    EXPECT_EQ(ValueRange::between(1, 1e6).text(), "in [1, 1e+06]");  // %g where it is exact
+    Seeded s;
+    EXPECT_EQ(errorOf([&] { t.load(mrpt::config::CConfigFileMemory("[s]\nlimit = 2\n"), "s", s); }), "[s] limit: must be <= 1, got 2");
+}

@@ -18,3 +18,8 @@ TEST(IcpOptionsShipped, EveryIniGivesThePinnedValues) {
     ASSERT_EQ(expected.size(), table.keys().size());
     EXPECT_EQ(simp_test::valueLines("icp-poses.ini", "ICP", table, o), expected);
 }
+
+TEST(IcpOptionsShipped, DocumentedKeyTableIsTheDeclaration) {
+    const std::string table = IcpPosesOptions::table().markdown(IcpPosesOptions{});
+    EXPECT_NE(simp_test::docText("lidar.md").find(table), std::string::npos) << "doc/lidar.md should hold:\n" << table;
+}

@@ -68,4 +68,16 @@ TEST(LocalizeOptionsShipped, DocumentedKeyTablesAreTheDeclarations) {
                                                                                         << experiment;
     const std::string lidar = LidarModelOptions::table().markdown(LidarModelOptions{});
     EXPECT_NE(simp_test::docText("lidar.md").find(lidar), std::string::npos) << "doc/lidar.md should hold:\n" << lidar;
+    // the filter's own sections, each under its heading
+    const std::string doc = simp_test::docText("localization.md");
+    const auto expectUnder = [&](const std::string& heading, const std::string& table) {
+        EXPECT_NE(doc.find(heading + "\n\n" + table), std::string::npos)
+            << "doc/localization.md should hold under " << heading << ":\n" << table;
+    };
+    expectUnder("#### `[State]`", stateParamsTable().markdown(StateParams{}));
+    expectUnder("#### `[DetectionNovelty]`", noveltyParamsTable().markdown(DetectionNoveltyParams{}));
+    expectUnder("#### `[SensorResetting]`", resettingParamsTable().markdown(SensorResettingParams{}));
+    expectUnder("#### `[HypothesisSearch]`", searchParamsTable().markdown(HypothesisSearchParams{}));
+    expectUnder("#### `[Challenger]`", challengerParamsTable().markdown(ChallengerParams{}));
+    expectUnder("Generated from `MotionModelOptions::table()` (`LocalizeOptions.cpp`):", MotionModelOptions::table().markdown(MotionModelOptions{}));
 }

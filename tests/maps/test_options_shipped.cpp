@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/maps/CObjectMapCreationOptions.h>
 
 using simp::maps::CObjectMap;
 
@@ -42,4 +43,23 @@ TEST(LikelihoodOptionsShipped, BadValuesNameSectionAndKey) {
 TEST(LikelihoodOptionsShipped, DocumentedKeyTableIsTheDeclaration) {
     const std::string table = CObjectMap::TLikelihoodOptions::table().markdown(CObjectMap::TLikelihoodOptions{});
     EXPECT_NE(simp_test::docText("object-map.md").find(table), std::string::npos) << "doc/object-map.md should hold:\n" << table;
+}
+
+TEST(CreationOptionsShipped, EveryIniGivesThePinnedValuesAndTheDocTableIsTheDeclaration) {
+    const auto& table = simp::maps::creationOptionsTable();
+    std::string report;
+    EXPECT_TRUE(simp_test::matchesPinned("(defaults)", table, CObjectMap::TMapDefinition{}, report)) << report;
+    for (const char* name : {"simp.ini", "simp-paper.ini", "d.ini", "edt.ini", "o.ini"}) {
+        const simp::io::StrictIni cfg(simp_test::shippedIni(name));
+        CObjectMap::TMapDefinition o;
+        table.load(cfg, "MetricMap_semanticObjectMap_00_creationOpts", o);
+        EXPECT_TRUE(simp_test::matchesPinned(name, table, o, report)) << report;
+    }
+    const std::string md = table.markdown(CObjectMap::TMapDefinition{});
+    EXPECT_NE(simp_test::docText("object-map.md").find(md), std::string::npos) << "doc/object-map.md should hold:\n" << md;
+    // a definition with a bad likelihood key reports it (MRPT's loader must not throw: load_error)
+    CObjectMap::TMapDefinition def;
+    def.loadFromConfigFile(simp::io::StrictIni("[m_creationOpts]\nmap_file = x.json\n[m_likelihoodOpts]\neta = 2\n", "m.ini"), "m");
+    EXPECT_EQ(def.map_file, "x.json");
+    EXPECT_EQ(def.load_error, "[m_likelihoodOpts] eta: must be in (0, 1), got 2");
 }

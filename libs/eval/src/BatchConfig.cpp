@@ -31,17 +31,52 @@ std::vector<std::string> splitListKeepingSpaces(const std::string& s) {
     return out;
 }
 
-const std::vector<std::string> kMethods{"simp", "edt", "d", "o", "lidar", "simp+lidar"};
+/// Every method a batch runs with its paper label, once.
+constexpr std::pair<const char*, const char*> kMethods[] = {{"simp", "Ours"},        {"edt", "EDT-MCL"},
+                                                           {"d", "D-MCL"},          {"o", "O-MCL"},
+                                                           {"lidar", "LiDAR-MCL"}, {"simp+lidar", "Ours+LiDAR"}};
+
+using io::ValueRange;
+
+std::string joined(const std::vector<std::string>& v, const char* sep = " ") {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+    return s;
+}
+
+/// A free-text key (a path or a label) of T.
+template <class T, class Field>
+void textKey(io::OptionTable<T>& t, const std::string& key, Field field, const std::string& allowed, const std::string& meaning) {
+    t.custom(
+        key, "", allowed, meaning, [field](T& o, const std::string& text, const std::string&) { o.*field = text; },
+        [field](const T& o, int) { return o.*field; });
+}
+
+/// A list key of T (entries separated by spaces or commas); an empty value keeps the default.
+template <class T, class Field>
+void listKey(io::OptionTable<T>& t, const std::string& key, Field field, const std::string& meaning) {
+    t.custom(
+        key, "", "a list", meaning,
+        [field](T& o, const std::string& text, const std::string&) {
+            if (const auto v = splitList(text); !v.empty()) o.*field = v;
+        },
+        [field](const T& o, int) { return joined(o.*field); });
+}
 
 }  // namespace
 
+const std::vector<std::string>& batchMethodNames() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const auto& [name, label] : kMethods) n.emplace_back(name);
+        return n;
+    }();
+    return names;
+}
+
 std::string methodLabel(const std::string& method) {
-    if (method == "simp") return "Ours";
-    if (method == "edt") return "EDT-MCL";
-    if (method == "d") return "D-MCL";
-    if (method == "o") return "O-MCL";
-    if (method == "lidar") return "LiDAR-MCL";
-    if (method == "simp+lidar") return "Ours+LiDAR";
+    for (const auto& [name, label] : kMethods)
+        if (method == name) return label;
     return method;
 }
 
@@ -49,11 +84,90 @@ std::string rowLabel(const std::string& method, const std::string& variant) {
     return variant.empty() ? methodLabel(method) : methodLabel(method) + " (" + variant + ")";
 }
 
-void loadMapMetricsParams(const io::StrictIni& ini, MapMatchParams& p) {
-    p.max_center_dist_m = ini.readNumber("map_metrics", "max_center_dist_m", p.max_center_dist_m, 1e-6, 100);
-    const auto classes = splitListKeepingSpaces(ini.read_string("map_metrics", "classes", ""));
-    if (!classes.empty()) p.classes = classes;
+const io::OptionTable<BatchConfig>& BatchConfig::table() {
+    using O = BatchConfig;
+    static const io::OptionTable<O> t = [] {
+        io::OptionTable<O> t("batch");
+        textKey(t, "world", &O::world, "required", "localization map, a world directory");
+        textKey(t, "map_name", &O::map_name, "a label", "label in the tables' `Map` column");
+        t.custom(
+            "sequences", "", "required, a list", "sequence directories (each with `sequence.rawlog`, `groundtruth.tum`)",
+            [](O& o, const std::string& text, const std::string&) {
+                o.sequences.clear();
+                for (const auto& dir : splitList(text)) o.sequences.push_back({"", dir});
+            },
+            [](const O& o, int) {
+                std::vector<std::string> dirs;
+                for (const auto& q : o.sequences) dirs.push_back(q.dir);
+                return joined(dirs);
+            });
+        listKey(t, "sequence_names", &O::sequence_names, "column labels, one per sequence (must be unique); default: directory names");
+        t.custom(
+            "methods", "", "a list of " + io::option_text::choices(batchMethodNames()),
+            "`simp-localize --method` values (`lidar`, `simp+lidar` need sequences with scans, doc/lidar.md)",
+            [](O& o, const std::string& text, const std::string& at) {
+                if (const auto v = splitList(text); !v.empty()) o.methods = v;
+                for (const auto& m : o.methods)
+                    if (std::find(batchMethodNames().begin(), batchMethodNames().end(), m) == batchMethodNames().end())
+                        throw std::invalid_argument(at + ": unknown method '" + m + "' (known: " + joined(batchMethodNames()) + ")");
+            },
+            [](const O& o, int) { return joined(o.methods); });
+        t.integer("repetitions", &O::repetitions, ValueRange::between(1, 1000), "runs per sequence, config and method")
+            .integer("first_seed", &O::first_seed, ValueRange::between(0, 2147483647), "seeds `first_seed ... first_seed + repetitions - 1`")
+            .integer("cores", &O::cores, ValueRange::between(1, 256), "parallel runs; `--cores` overrides");
+        textKey(t, "localize_bin", &O::localize_bin, "a path", "simp-localize path; empty = the `simp-localize` next to the simp-eval binary");
+        textKey(t, "localize_config", &O::localize_config, "a path",
+                "one config for every run, passed as `--config` (`--method` overrides its sensor model); excludes `localize_configs`");
+        listKey(t, "localize_configs", &O::localize_configs, "several configs, each run with every method as its own rows; each file must exist");
+        listKey(t, "localize_config_names", &O::localize_config_names, "row labels and run folders, one per config, unique, no `/`; default: file stems");
+        t.integer("particles", &O::particles, ValueRange::between(0, 500000), "passed as `--particles` when > 0");
+        listKey(t, "extra_args", &O::extra_args, "appended to each simp-localize command line");
+        listKey(t, "maps", &O::maps, "built maps (world directories) for the map tables");
+        listKey(t, "map_names", &O::map_names, "labels, one per map, unique, no `/`; default: directory names");
+        listKey(t, "map_ground_truths", &O::map_ground_truths, "ground-truth world: one for every map, or one per map; empty = `world`");
+        t.rule("world", [](const O& o) { return !o.world.empty(); }, "be set (the localization map's world directory)")
+            .rule("sequences", [](const O& o) { return !o.sequences.empty(); }, "be set (a list of sequence directories)")
+            .rule("localize_configs", [](const O& o) { return o.localize_config.empty() || o.localize_configs.empty(); },
+                  "not be given with [batch] localize_config (one config: localize_config; several: localize_configs)")
+            .rule("map_ground_truths", [](const O& o) { return o.map_ground_truths.empty() || !o.maps.empty(); }, "not be given without [batch] maps")
+            .rule("map_ground_truths",
+                  [](const O& o) { return o.map_ground_truths.size() <= 1 || o.map_ground_truths.size() == o.maps.size(); },
+                  "hold one ground truth for all maps, or one per map");
+        return t;
+    }();
+    return t;
 }
+
+const io::OptionTable<TrajMetricsParams>& trajMetricsTable() {
+    using O = TrajMetricsParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("metrics")
+            .number("max_trans_m", &O::max_trans_m, "m", ValueRange::between(1e-6, 1e3), "convergence radius")
+            .number("max_rot_rad", &O::max_rot_rad, "rad", ValueRange::between(1e-6, 2 * M_PI), "orientation bound (pi/4)")
+            .number("max_outside_s", &O::max_outside_s, "s", ValueRange::between(0, 1e6), "accumulated time outside the bounds that is a divergence")
+            .number("convergence_fraction", &O::convergence_fraction, "", ValueRange::between(1e-6, 1),
+                    "convergence must happen within this fraction of the duration");
+    return t;
+}
+
+const io::OptionTable<MapMatchParams>& mapMetricsTable() {
+    using O = MapMatchParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("map_metrics")
+            .number("max_center_dist_m", &O::max_center_dist_m, "m", ValueRange::between(1e-6, 100),
+                    "centre gate of the map tables and `simp-eval map --config`")
+            .custom(
+                "classes", "", "a comma-separated list",
+                "classes evaluated (names may hold spaces); empty = every class of either map; `map --classes` overrides",
+                [](O& o, const std::string& text, const std::string&) {
+                    if (const auto v = splitListKeepingSpaces(text); !v.empty()) o.classes = v;
+                },
+                [](const O& o, int) { return joined(o.classes, ", "); });
+    return t;
+}
+
+void loadMapMetricsParams(const io::StrictIni& ini, MapMatchParams& p) { mapMetricsTable().load(ini, "map_metrics", p); }
+void loadTrajMetricsParams(const io::StrictIni& ini, TrajMetricsParams& p) { trajMetricsTable().load(ini, "metrics", p); }
 
 namespace {
 
@@ -88,72 +202,26 @@ std::string dirName(const std::string& dir) {
 }
 std::string fileStem(const std::string& file) { return std::filesystem::path(file).stem().string(); }
 
-BatchConfig loadBatchConfigStrict(const std::string& ini_path) {
-    const io::StrictIni ini(ini_path);  // exists, is a file, is an .ini
-    const std::function<void(const std::string&, const std::string&)> fail = [&](const std::string& key,
-                                                                                 const std::string& why) {
-        throw std::runtime_error("batch config '" + ini_path + "', key '" + key + "': " + why);
+/// What the table cannot check key by key: labels of sequences, configs and maps (unique, usable as folders).
+void resolveLabels(BatchConfig& c) {
+    const std::function<void(const std::string&, const std::string&)> fail = [](const std::string& key, const std::string& why) {
+        throw std::invalid_argument(key + ": " + why);
     };
-    BatchConfig c;
-    const std::string S = "batch";
-    c.world = ini.read_string(S, "world", "");
-    if (c.world.empty()) fail("[batch] world", "required (the localization map's world directory)");
-    c.map_name = ini.read_string(S, "map_name", c.map_name);
-    const auto dirs = splitList(ini.read_string(S, "sequences", ""));
-    if (dirs.empty()) fail("[batch] sequences", "required (list of sequence directories)");
-    const auto names = splitList(ini.read_string(S, "sequence_names", ""));
-    if (!names.empty() && names.size() != dirs.size())
-        fail("[batch] sequence_names", std::to_string(names.size()) + " names for " + std::to_string(dirs.size()) +
-                                           " sequences");
-    for (std::size_t i = 0; i < dirs.size(); ++i) {
-        std::string name = names.empty() ? std::filesystem::path(dirs[i]).lexically_normal().filename().string()
-                                         : names[i];
+    const auto& names = c.sequence_names;
+    if (!names.empty() && names.size() != c.sequences.size())
+        fail("[batch] sequence_names", std::to_string(names.size()) + " names for " + std::to_string(c.sequences.size()) + " sequences");
+    for (std::size_t i = 0; i < c.sequences.size(); ++i) {
+        std::string name = names.empty() ? std::filesystem::path(c.sequences[i].dir).lexically_normal().filename().string() : names[i];
         if (name.empty()) name = "S" + std::to_string(i + 1);
-        for (const auto& s : c.sequences)
-            if (s.name == name) fail("[batch] sequences", "two sequences are named '" + name + "' (set sequence_names)");
-        c.sequences.push_back({name, dirs[i]});
+        for (std::size_t k = 0; k < i; ++k)
+            if (c.sequences[k].name == name) fail("[batch] sequences", "two sequences are named '" + name + "' (set sequence_names)");
+        c.sequences[i].name = name;
     }
-    const auto methods = splitList(ini.read_string(S, "methods", ""));
-    if (!methods.empty()) c.methods = methods;
-    for (const auto& m : c.methods)
-        if (std::find(kMethods.begin(), kMethods.end(), m) == kMethods.end())
-            fail("[batch] methods", "unknown method '" + m + "' (known: simp edt d o lidar simp+lidar)");
-    c.repetitions = static_cast<int>(ini.readInteger(S, "repetitions", c.repetitions, 1, 1000));
-    c.first_seed = static_cast<int>(ini.readInteger(S, "first_seed", c.first_seed, 0, 2147483647));
-    c.cores = static_cast<int>(ini.readInteger(S, "cores", c.cores, 1, 256));
-    c.localize_bin = ini.read_string(S, "localize_bin", "");
-    c.localize_config = ini.read_string(S, "localize_config", "");
-    c.localize_configs = splitList(ini.read_string(S, "localize_configs", ""));
-    if (!c.localize_config.empty() && !c.localize_configs.empty())
-        fail("[batch] localize_configs", "excludes [batch] localize_config (one config: localize_config; several: "
-                                         "localize_configs)");
-    c.localize_config_names = labelsOf(c.localize_configs, splitList(ini.read_string(S, "localize_config_names", "")),
-                                       "[batch] localize_config_names", "[batch] localize_configs", fileStem, fail);
-    c.particles = static_cast<int>(ini.readInteger(S, "particles", 0, 0, 500000));
-    c.extra_args = splitList(ini.read_string(S, "extra_args", ""));
-    c.maps = splitList(ini.read_string(S, "maps", ""));
-    c.map_names = labelsOf(c.maps, splitList(ini.read_string(S, "map_names", "")), "[batch] map_names",
-                           "[batch] maps", dirName, fail);
-    c.map_ground_truths = splitList(ini.read_string(S, "map_ground_truths", ""));
-    if (!c.map_ground_truths.empty() && c.maps.empty()) fail("[batch] map_ground_truths", "given without [batch] maps");
-    if (c.map_ground_truths.size() > 1 && c.map_ground_truths.size() != c.maps.size())
-        fail("[batch] map_ground_truths", std::to_string(c.map_ground_truths.size()) + " ground truths for " +
-                                              std::to_string(c.maps.size()) + " maps (give one for all, or one each)");
-
-    const std::string M = "metrics";
-    c.metrics.max_trans_m = ini.readNumber(M, "max_trans_m", c.metrics.max_trans_m, 1e-6, 1e3);
-    c.metrics.max_rot_rad = ini.readNumber(M, "max_rot_rad", c.metrics.max_rot_rad, 1e-6, 2 * M_PI);
-    c.metrics.max_outside_s = ini.readNumber(M, "max_outside_s", c.metrics.max_outside_s, 0, 1e6);
-    c.metrics.convergence_fraction = ini.readNumber(M, "convergence_fraction", c.metrics.convergence_fraction, 1e-6, 1);
-    if (!(c.metrics.max_trans_m > 0)) fail("[metrics] max_trans_m", "must be > 0");
-    if (!(c.metrics.max_rot_rad > 0)) fail("[metrics] max_rot_rad", "must be > 0");
-    if (!(c.metrics.max_outside_s >= 0)) fail("[metrics] max_outside_s", "must be >= 0");
-    if (!(c.metrics.convergence_fraction > 0 && c.metrics.convergence_fraction <= 1))
-        fail("[metrics] convergence_fraction", "must be in (0, 1]");
-    loadMapMetricsParams(ini, c.map_metrics);
-    ini.checkUnknown();
-    return c;
+    c.localize_config_names = labelsOf(c.localize_configs, c.localize_config_names, "[batch] localize_config_names",
+                                       "[batch] localize_configs", fileStem, fail);
+    c.map_names = labelsOf(c.maps, c.map_names, "[batch] map_names", "[batch] maps", dirName, fail);
 }
+
 }  // namespace
 
 std::vector<BatchVariant> BatchConfig::variants() const {
@@ -178,30 +246,25 @@ std::vector<BatchMap> BatchConfig::batchMaps() const {
 
 BatchConfig loadBatchConfig(const std::string& ini_path) {
     try {
-        return loadBatchConfigStrict(ini_path);
-    } catch (const std::invalid_argument& e) {  // io::StrictIni's errors: this function throws runtime_error
+        const io::StrictIni ini(ini_path);  // exists, is a file, is an .ini
+        BatchConfig c;
+        ini.loadChecked([&](const io::StrictIni& i) {
+            BatchConfig::table().load(i, "batch", c);
+            trajMetricsTable().load(i, "metrics", c.metrics);
+            mapMetricsTable().load(i, "map_metrics", c.map_metrics);
+            resolveLabels(c);
+        });
+        return c;
+    } catch (const std::invalid_argument& e) {  // "FILE: [section] key: ..."; this function throws runtime_error
         throw std::runtime_error(e.what());
     }
 }
 
 std::string BatchConfig::dump() const {
     std::ostringstream s;
-    s << "world = " << world << "\nmap_name = " << map_name << "\nsequences =";
-    for (const auto& q : sequences) s << " " << q.name << ":" << q.dir;
-    s << "\nmethods =";
-    for (const auto& m : methods) s << " " << m;
-    s << "\nrepetitions = " << repetitions << "\nfirst_seed = " << first_seed << "\ncores = " << cores
-      << "\nlocalize_bin = " << localize_bin << "\nlocalize configs =";
-    for (const auto& v : variants()) s << " " << (v.name.empty() ? "" : v.name + ":") << (v.config.empty() ? "(none)" : v.config);
-    s << "\nparticles = " << particles << "\nextra_args =";
-    for (const auto& a : extra_args) s << " " << a;
-    s << "\nmaps =";
-    for (const auto& m : batchMaps()) s << " " << m.name << ":" << m.dir << " vs " << m.ground_truth;
-    s << "\n[metrics] max_trans_m = " << metrics.max_trans_m << ", max_rot_rad = " << metrics.max_rot_rad
-      << ", max_outside_s = " << metrics.max_outside_s << ", convergence_fraction = " << metrics.convergence_fraction
-      << "\n[map_metrics] max_center_dist_m = " << map_metrics.max_center_dist_m << ", classes =";
-    for (const auto& k : map_metrics.classes) s << " '" << k << "'";
-    s << "\n";
+    table().dump(*this, s);
+    trajMetricsTable().dump(metrics, s);
+    mapMetricsTable().dump(map_metrics, s);
     return s.str();
 }
 

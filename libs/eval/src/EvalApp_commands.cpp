@@ -36,14 +36,6 @@ void requireDir(const std::string& path, const std::string& what) {
     if (!fs::is_directory(path)) throw std::runtime_error(what + " '" + path + "': directory not found");
 }
 
-/// Reads [metrics] of a batch.ini (its [batch] and [map_metrics] serve the other commands).
-void loadTrajMetrics(const io::StrictIni& ini, TrajMetricsParams& p) {
-    p.max_trans_m = ini.readNumber("metrics", "max_trans_m", p.max_trans_m, 1e-6, 1e3);
-    p.max_rot_rad = ini.readNumber("metrics", "max_rot_rad", p.max_rot_rad, 1e-6, 2 * M_PI);
-    p.max_outside_s = ini.readNumber("metrics", "max_outside_s", p.max_outside_s, 0, 1e6);
-    p.convergence_fraction = ini.readNumber("metrics", "convergence_fraction", p.convergence_fraction, 1e-6, 1);
-}
-
 void writeText(const fs::path& path, const std::string& text) {
     std::ofstream f(path);
     if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
@@ -65,7 +57,7 @@ int EvalApp::runTraj(std::ostream& out) {
     TrajMetricsParams p;
     if (has("--config")) {
         const io::StrictIni ini(value("--config"));
-        ini.loadChecked([&](const io::StrictIni& c) { loadTrajMetrics(c, p); }, {"batch", "map_metrics"});
+        ini.loadChecked([&](const io::StrictIni& c) { loadTrajMetricsParams(c, p); }, {"batch", "map_metrics"});
     }
     p.max_trans_m = number("--max-trans", p.max_trans_m, 1e-6, 1e3);
     p.max_rot_rad = number("--max-rot", p.max_rot_rad, 1e-6, 2 * M_PI);

@@ -10,6 +10,14 @@ namespace simp::io {
 namespace {
 /// Never a value of a real .ini: tells an absent key from an empty one with any config source.
 constexpr const char* kAbsent = "\x01(absent)";
+
+/// A bound as text: "0.5", "1e+06"; a whole number that %g would round (4294967295, not 4.29497e+09)
+/// with all its digits.
+std::string boundText(double v) {
+    const std::string g = numberText(v);
+    if (v == std::floor(v) && std::abs(v) < 1e18 && std::stod(g) != v) return std::to_string(static_cast<long long>(v));
+    return g;
+}
 }  // namespace
 
 bool ValueRange::contains(double v) const {
@@ -18,8 +26,9 @@ bool ValueRange::contains(double v) const {
 
 std::string ValueRange::text() const {
     if (std::isinf(lo) && std::isinf(hi)) return "finite";
-    if (std::isinf(hi)) return (lo_open ? "> " : ">= ") + numberText(lo);
-    return std::string("in ") + (lo_open ? "(" : "[") + numberText(lo) + ", " + numberText(hi) + (hi_open ? ")" : "]");
+    if (std::isinf(hi)) return (lo_open ? "> " : ">= ") + boundText(lo);
+    if (std::isinf(lo)) return (hi_open ? "< " : "<= ") + boundText(hi);
+    return std::string("in ") + (lo_open ? "(" : "[") + boundText(lo) + ", " + boundText(hi) + (hi_open ? ")" : "]");
 }
 
 namespace option_text {

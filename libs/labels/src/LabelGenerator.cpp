@@ -10,41 +10,32 @@
 
 namespace simp::labels {
 
-void LabelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    MRPT_LOAD_CONFIG_VAR(iou_threshold, double, cfg, s);
-    MRPT_LOAD_CONFIG_VAR(keep_unmatched, bool, cfg, s);
-    MRPT_LOAD_CONFIG_VAR(max_truncation, double, cfg, s);
-    MRPT_LOAD_CONFIG_VAR(near_m, double, cfg, s);
-    visibility.pixel_step = cfg.read_int(s, "visibility_pixel_step", visibility.pixel_step);
-    visibility.occupied_threshold = cfg.read_double(s, "visibility_occupied_threshold", visibility.occupied_threshold);
-    visibility.ignore_object_cells = cfg.read_bool(s, "visibility_ignore_object_cells", visibility.ignore_object_cells);
-    visibility.max_range_m = cfg.read_double(s, "visibility_max_range_m", visibility.max_range_m);
-    visibility.object_cell_margin_m = cfg.read_double(s, "visibility_object_cell_margin_m", visibility.object_cell_margin_m);
-    validate();
+const io::OptionTable<LabelOptions>& LabelOptions::table() {
+    using O = LabelOptions;
+    using io::ValueRange;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("simp-labels")
+            .number("iou_threshold", &O::iou_threshold, "", ValueRange::aboveUpTo(0, 1), "minimum 2D IoU between a detection and the clipped projected box (`bbox2D_trunc`); `--iou` overrides")
+            .flag("keep_unmatched", &O::keep_unmatched, "also annotate objects in view that no detection matched (`bbox2D_tight` = [-1,-1,-1,-1])")
+            .number("max_truncation", &O::max_truncation, "", ValueRange::between(0, 1), "objects more truncated are not candidates")
+            .number("near_m", &O::near_m, "m", ValueRange::positive(), "near clipping plane (camera z)")
+            .integer("visibility_pixel_step", [](auto& o) -> auto& { return o.visibility.pixel_step; }, "px", ValueRange::atLeast(1),
+                     "one visibility ray every N px in u and v")
+            .number("visibility_occupied_threshold", [](auto& o) -> auto& { return o.visibility.occupied_threshold; }, "",
+                    ValueRange::aboveUpTo(0, 1), "floor-plan cells with occupancy >= this are walls")
+            .flag("visibility_ignore_object_cells", [](auto& o) -> auto& { return o.visibility.ignore_object_cells; },
+                  "cells under an object's footprint (grown by the margin) are not walls: the authors' GT floor plan draws "
+                  "furniture outlines, which would hide every object behind its own footprint")
+            .number("visibility_object_cell_margin_m", [](auto& o) -> auto& { return o.visibility.object_cell_margin_m; }, "m",
+                    ValueRange::atLeast(0), "margin around the footprints for the previous key; the authors' outlines lie up to 2 cells outside the boxes")
+            .number("visibility_max_range_m", [](auto& o) -> auto& { return o.visibility.max_range_m; }, "m", ValueRange::positive(),
+                    "wall rays stop here");
+    return t;
 }
 
-void LabelOptions::validate() const {
-    const auto bad = [](const std::string& k, const std::string& w) { throw std::invalid_argument("[simp-labels] " + k + ": " + w); };
-    if (!(iou_threshold > 0 && iou_threshold <= 1)) bad("iou_threshold", "must be in (0, 1]");
-    if (!(max_truncation >= 0 && max_truncation <= 1)) bad("max_truncation", "must be in [0, 1]");
-    if (!(near_m > 0)) bad("near_m", "must be > 0 (m)");
-    if (visibility.pixel_step < 1) bad("visibility_pixel_step", "must be >= 1 px");
-    if (!(visibility.occupied_threshold > 0 && visibility.occupied_threshold <= 1))
-        bad("visibility_occupied_threshold", "must be in (0, 1]");
-    if (!(visibility.max_range_m > 0)) bad("visibility_max_range_m", "must be > 0 (m)");
-    if (!(visibility.object_cell_margin_m >= 0)) bad("visibility_object_cell_margin_m", "must be >= 0 (m)");
-}
-
-void LabelOptions::dumpToTextStream(std::ostream& out) const {
-    out << "[simp-labels]\n"
-        << "iou_threshold = " << iou_threshold << "\nkeep_unmatched = " << keep_unmatched
-        << "\nmax_truncation = " << max_truncation << "\nnear_m = " << near_m
-        << "\nvisibility_pixel_step = " << visibility.pixel_step
-        << "\nvisibility_occupied_threshold = " << visibility.occupied_threshold
-        << "\nvisibility_ignore_object_cells = " << visibility.ignore_object_cells
-        << "\nvisibility_max_range_m = " << visibility.max_range_m
-        << "\nvisibility_object_cell_margin_m = " << visibility.object_cell_margin_m << "\n";
-}
+void LabelOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void LabelOptions::validate() const { table().validate(*this); }
+void LabelOptions::dumpToTextStream(std::ostream& out) const { table().dump(*this, out); }
 
 geometry::Box3D boxInCameraOmni3D(const PosedImage& image, const geometry::Box3D& box_world) {
     const geometry::Box3D up = geometry::canonicalizeUpright(box_world);

@@ -1,4 +1,5 @@
 #include <simp/maps/CObjectMap.h>
+#include <simp/maps/CObjectMapCreationOptions.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <filesystem>
@@ -27,6 +28,27 @@ std::vector<std::string> splitClassList(const std::string& text) {
 }  // namespace
 
 // ---------------------------------------------------------------- map definition (.ini)
+const io::OptionTable<CObjectMap::TMapDefinition>& creationOptionsTable() {
+    using O = CObjectMap::TMapDefinition;
+    const auto text = [](std::string O::*field) {
+        return std::make_pair([field](O& o, const std::string& t, const std::string&) { o.*field = t; },
+                              [field](const O& o, int) { return o.*field; });
+    };
+    static const io::OptionTable<O> t = [&] {
+        io::OptionTable<O> t("_creationOpts");
+        const auto [load_file, print_file] = text(&O::map_file);
+        const auto [load_classes, print_classes] = text(&O::class_names);
+        t.custom("map_file", "", "a path", "object map JSON (`doc/formats.md`), relative to the working directory; empty = an empty map",
+                 load_file, print_file)
+            .custom("class_names", "", "a comma-separated list",
+                    "when set, objects of other classes are dropped and class ids / class noise follow the names. With no "
+                    "`map_file` it is the class list of the empty map (default: the detector's 14 classes)",
+                    load_classes, print_classes);
+        return t;
+    }();
+    return t;
+}
+
 CObjectMap::TMapDefinition::TMapDefinition() = default;
 
 void CObjectMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::config::CConfigFileBase& source,
@@ -35,8 +57,7 @@ void CObjectMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::con
     load_error.clear();
     try {
         const std::string creation = sectionNamePrefix + "_creationOpts";
-        MRPT_LOAD_CONFIG_VAR(map_file, string, source, creation);
-        MRPT_LOAD_CONFIG_VAR(class_names, string, source, creation);
+        creationOptionsTable().load(source, creation, *this);
         likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
         insertionOpts.loadFromConfigFile(source, sectionNamePrefix + "_insertOpts");
     } catch (const std::exception& e) {
@@ -47,9 +68,7 @@ void CObjectMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::con
 
 void CObjectMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const {
     if (!load_error.empty()) out << "load error                              = " << load_error << "\n";
-    out << "map_file                                = " << (map_file.empty() ? "(none: empty map)" : map_file) << "\n";
-    out << "class_names                             = " << (class_names.empty() ? "(from the map file)" : class_names)
-        << "\n";
+    creationOptionsTable().dump(*this, out);
     likelihoodOpts.dumpToTextStream(out);
     insertionOpts.dumpToTextStream(out);
 }

@@ -9,11 +9,6 @@ namespace {
 
 double snap(double v, double res) { return std::round(v / res) * res; }
 
-void requirePositive(double v, const char* key) {
-    if (!(v > 0.0) || !std::isfinite(v))
-        throw std::invalid_argument(std::string("office parameter '") + key + "' must be a positive number");
-}
-
 /// Room widths along one row, snapped to the grid.
 std::vector<double> drawWidths(int count, const OfficeParams& p, Rng& rng) {
     std::vector<double> w(static_cast<std::size_t>(count));
@@ -84,46 +79,6 @@ const char* roomTypeName(RoomType t) {
         case RoomType::Corridor: return "corridor";
     }
     return "?";
-}
-
-void OfficeParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    rooms = cfg.read_int(s, "rooms", rooms);
-    size_m2 = cfg.read_double(s, "size_m2", size_m2);
-    resolution_m = cfg.read_double(s, "resolution_m", resolution_m);
-    wall_thickness_m = cfg.read_double(s, "wall_thickness_m", wall_thickness_m);
-    corridor_width_m = cfg.read_double(s, "corridor_width_m", corridor_width_m);
-    door_width_m = cfg.read_double(s, "door_width_m", door_width_m);
-    room_width_min_m = cfg.read_double(s, "room_width_min_m", room_width_min_m);
-    room_width_max_m = cfg.read_double(s, "room_width_max_m", room_width_max_m);
-    room_depth_min_m = cfg.read_double(s, "room_depth_min_m", room_depth_min_m);
-    room_depth_max_m = cfg.read_double(s, "room_depth_max_m", room_depth_max_m);
-    max_rooms_per_side = cfg.read_int(s, "max_rooms_per_side", max_rooms_per_side);
-    kitchen_every_n_rooms = cfg.read_double(s, "kitchen_every_n_rooms", kitchen_every_n_rooms);
-    meeting_fraction = cfg.read_double(s, "meeting_fraction", meeting_fraction);
-    validate();
-}
-
-void OfficeParams::validate() const {
-    if (size_m2 <= 0 && (rooms < 1 || rooms > 2000))
-        throw std::invalid_argument("office parameter 'rooms' must be in [1, 2000], got " + std::to_string(rooms));
-    if (!std::isfinite(size_m2) || size_m2 > 1e6)
-        throw std::invalid_argument("office parameter 'size_m2' must be a finite area <= 1e6 m^2");
-    requirePositive(resolution_m, "resolution_m");
-    requirePositive(wall_thickness_m, "wall_thickness_m");
-    requirePositive(corridor_width_m, "corridor_width_m");
-    requirePositive(door_width_m, "door_width_m");
-    requirePositive(room_width_min_m, "room_width_min_m");
-    requirePositive(room_depth_min_m, "room_depth_min_m");
-    requirePositive(kitchen_every_n_rooms, "kitchen_every_n_rooms");
-    if (room_width_max_m < room_width_min_m)
-        throw std::invalid_argument("office parameter 'room_width_max_m' must be >= room_width_min_m");
-    if (room_depth_max_m < room_depth_min_m)
-        throw std::invalid_argument("office parameter 'room_depth_max_m' must be >= room_depth_min_m");
-    if (room_width_min_m < door_width_m + 0.8)
-        throw std::invalid_argument("office parameter 'room_width_min_m' must leave room for the door (>= door_width_m + 0.8)");
-    if (max_rooms_per_side < 1) throw std::invalid_argument("office parameter 'max_rooms_per_side' must be >= 1");
-    if (!(meeting_fraction >= 0 && meeting_fraction <= 1))
-        throw std::invalid_argument("office parameter 'meeting_fraction' must be in [0, 1]");
 }
 
 OfficeLayout makeOfficeLayout(const OfficeParams& p, Rng& rng) {

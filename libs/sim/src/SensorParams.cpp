@@ -1,152 +1,160 @@
+/// \file SensorParams.cpp
+/// The keys of [cameras], [visibility], [detector], [false_positives], [people] and [lidar], declared
+/// once (io::OptionTable): key, field, unit, allowed values, meaning (doc/simulator.md's tables).
 #include <simp/io/StrictNumber.h>
+#include <simp/obs/ObjectClasses.h>
 #include <simp/sim/SensorParams.h>
 
-#include <mrpt/system/string_utils.h>
-
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 namespace simp::sim {
 namespace {
 
-void check(bool ok, const std::string& section, const std::string& key, const std::string& what) {
-    if (!ok) throw std::invalid_argument("[" + section + "] " + key + ": " + what);
-}
-bool prob(double v) { return v >= 0 && v <= 1; }
+using io::ValueRange;
+const ValueRange kProbability = ValueRange::between(0, 1);
 
-/// true / false / 1 / 0 / yes / no; absent keeps `def`; anything else throws naming the key.
-bool readStrictBool(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key, bool def) {
-    const std::string text = mrpt::system::trim(cfg.read_string(s, key, ""));
-    if (text.empty()) return def;
-    return io::parseBool(text, "[" + s + "] " + key);
-}
-
-std::vector<double> readPerClass(const mrpt::config::CConfigFileBase& cfg, const std::string& s, const std::string& key,
-                                 const std::vector<double>& def, std::size_t num_classes) {
-    const std::string text = cfg.read_string(s, key, "");
-    if (text.empty()) return def;
+/// A per-class list "v0 v1 ... v13" (one number >= 0 per class of obs::defaultClassNames()).
+std::vector<double> perClassList(const std::string& text, const std::string& at) {
+    const std::size_t num_classes = obs::defaultClassNames().size();
     std::vector<double> out;
     std::istringstream is(text);
-    std::string tok;
-    while (is >> tok) {
+    for (std::string tok; is >> tok;) {
         const auto v = io::parseFiniteNumber(tok);
-        check(v && *v >= 0, s, key, "'" + tok + "' is not a number >= 0");
+        if (!v || *v < 0) throw std::invalid_argument(at + ": '" + tok + "' is not a number >= 0");
         out.push_back(*v);
     }
-    check(out.size() == num_classes, s, key,
-          "expected " + std::to_string(num_classes) + " values (one per class), got " + std::to_string(out.size()));
+    if (out.size() != num_classes)
+        throw std::invalid_argument(at + ": expected " + std::to_string(num_classes) + " values (one per class), got " +
+                                    std::to_string(out.size()));
     return out;
+}
+
+std::string listText(const std::vector<double>& v, int precision) {
+    std::ostringstream out;
+    out.precision(precision);
+    for (std::size_t k = 0; k < v.size(); ++k) out << (k ? " " : "") << v[k];
+    return out.str();
+}
+
+/// A per-class list key of VisibilityParams.
+template <class Field>
+io::OptionTable<VisibilityParams>& perClass(io::OptionTable<VisibilityParams>& t, const std::string& key, Field field,
+                                            const std::string& meaning) {
+    return t.custom(
+        key, "m", "14 numbers >= 0", meaning,
+        [field](VisibilityParams& o, const std::string& text, const std::string& at) {
+            if (!text.empty()) o.*field = perClassList(text, at);  // empty: the defaults
+        },
+        [field](const VisibilityParams& o, int precision) { return listText(o.*field, precision); });
 }
 
 }  // namespace
 
-void CameraParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    count = cfg.read_int(s, "count", count);
-    first_yaw_deg = cfg.read_double(s, "first_yaw_deg", first_yaw_deg);
-    mount_radius_m = cfg.read_double(s, "mount_radius_m", mount_radius_m);
-    height_m = cfg.read_double(s, "height_m", height_m);
-    pitch_down_deg = cfg.read_double(s, "pitch_down_deg", pitch_down_deg);
-    const int width_px = cfg.read_int(s, "width_px", static_cast<int>(intrinsics.ncols));
-    const int height_px = cfg.read_int(s, "height_px", static_cast<int>(intrinsics.nrows));
-    const double fx = cfg.read_double(s, "fx", intrinsics.fx()), fy = cfg.read_double(s, "fy", intrinsics.fy());
-    const double cx = cfg.read_double(s, "cx", intrinsics.cx()), cy = cfg.read_double(s, "cy", intrinsics.cy());
-    rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
-    check(count >= 1 && count <= 16, s, "count", "must be in [1, 16]");
-    check(width_px > 0 && height_px > 0, s, "width_px/height_px", "must be > 0");
-    check(fx > 0 && fy > 0, s, "fx/fy", "must be > 0");
-    intrinsics = camera::makeIntrinsics(width_px, height_px, fx, fy, cx, cy);
-    check(rate_hz > 0 && std::isfinite(rate_hz), s, "rate_hz", "must be > 0");
-    check(std::isfinite(height_m) && std::isfinite(mount_radius_m), s, "height_m/mount_radius_m", "must be finite");
+const io::OptionTable<CameraParams>& CameraParams::table() {
+    using O = CameraParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("cameras")
+            .integer("count", &O::count, ValueRange::between(1, 16), "cameras on a ring around the robot centre")
+            .number("first_yaw_deg", &O::first_yaw_deg, "deg", ValueRange::finite(), "yaw of camera 0 (0 = robot forward, 90 = left); camera i at + i * 360 / count")
+            .number("mount_radius_m", &O::mount_radius_m, "m", ValueRange::finite(), "distance of each camera from the robot centre along its yaw")
+            .number("height_m", &O::height_m, "m", ValueRange::finite(), "camera height above the floor")
+            .number("pitch_down_deg", &O::pitch_down_deg, "deg", ValueRange::finite(), "downward tilt")
+            .integer("width_px", [](auto& o) -> auto& { return o.intrinsics.ncols; }, "px", ValueRange::between(1, 100000), "image width")
+            .integer("height_px", [](auto& o) -> auto& { return o.intrinsics.nrows; }, "px", ValueRange::between(1, 100000), "image height")
+            .number("fx", [](auto& o) -> auto& { return o.intrinsics.intrinsicParams(0, 0); }, "px", ValueRange::positive(), "focal length along x")
+            .number("fy", [](auto& o) -> auto& { return o.intrinsics.intrinsicParams(1, 1); }, "px", ValueRange::positive(), "focal length along y")
+            .number("cx", [](auto& o) -> auto& { return o.intrinsics.intrinsicParams(0, 2); }, "px", ValueRange::finite(), "principal point x")
+            .number("cy", [](auto& o) -> auto& { return o.intrinsics.intrinsicParams(1, 2); }, "px", ValueRange::finite(), "principal point y")
+            .number("rate_hz", &O::rate_hz, "Hz", ValueRange::positive(), "frame rate of every camera (a divisor of the odometry rate is best)");
+    return t;
 }
 
-void VisibilityParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s,
-                                      std::size_t num_classes) {
-    min_range_m = readPerClass(cfg, s, "min_range_m", min_range_m, num_classes);
-    max_range_m = readPerClass(cfg, s, "max_range_m", max_range_m, num_classes);
-    default_max_range_m = cfg.read_double(s, "default_max_range_m", default_max_range_m);
-    min_inside_fraction = cfg.read_double(s, "min_inside_fraction", min_inside_fraction);
-    wall_rays = cfg.read_int(s, "wall_rays", wall_rays);
-    min_visible_ray_fraction = cfg.read_double(s, "min_visible_ray_fraction", min_visible_ray_fraction);
-    self_margin_m = cfg.read_double(s, "self_margin_m", self_margin_m);
-    max_occluded_fraction = cfg.read_double(s, "max_occluded_fraction", max_occluded_fraction);
-    check(default_max_range_m > 0, s, "default_max_range_m", "must be > 0");
-    check(prob(min_inside_fraction), s, "min_inside_fraction", "must be in [0, 1]");
-    check(wall_rays >= 1 && wall_rays <= 17, s, "wall_rays", "must be in [1, 17]");
-    check(prob(min_visible_ray_fraction), s, "min_visible_ray_fraction", "must be in [0, 1]");
-    check(self_margin_m >= 0 && self_margin_m < 1, s, "self_margin_m", "must be in [0, 1)");
-    check(prob(max_occluded_fraction), s, "max_occluded_fraction", "must be in [0, 1]");
+const io::OptionTable<VisibilityParams>& VisibilityParams::table() {
+    using O = VisibilityParams;
+    static const io::OptionTable<O> t = [] {
+        io::OptionTable<O> t("visibility");
+        perClass(t, "min_range_m", &O::min_range_m, "per class: minimum horizontal distance camera -> box centre; 0 = no limit");
+        perClass(t, "max_range_m", &O::max_range_m, "per class: maximum distance; 0 = `default_max_range_m`");
+        t.number("default_max_range_m", &O::default_max_range_m, "m", ValueRange::positive(), "range limit of classes whose maximum is 0")
+            .number("min_inside_fraction", &O::min_inside_fraction, "", kProbability, "truncation: fraction of the 8 projected box corners that must fall inside the image")
+            .integer("wall_rays", &O::wall_rays, ValueRange::between(1, 17), "wall occlusion: rays to the box centre and `wall_rays` - 1 footprint points")
+            .number("min_visible_ray_fraction", &O::min_visible_ray_fraction, "", kProbability, "fraction of the rays that must cross no wall cell")
+            .number("self_margin_m", &O::self_margin_m, "m", ValueRange{0, 1, false, true}, "rays ignore wall cells this close to the object's own footprint")
+            .number("max_occluded_fraction", &O::max_occluded_fraction, "", kProbability, "object occlusion: dropped when more of its 2D box is covered by nearer boxes");
+        return t;
+    }();
+    return t;
 }
 
-void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    detection_probability = cfg.read_double(s, "detection_probability", detection_probability);
-    default_noise_std_m = cfg.read_double(s, "default_noise_std_m", default_noise_std_m);
-    z_std_m = cfg.read_double(s, "z_std_m", z_std_m);
-    size_std_fraction = cfg.read_double(s, "size_std_fraction", size_std_fraction);
-    yaw_std_rad = cfg.read_double(s, "yaw_std_rad", yaw_std_rad);
-    wrong_class_probability = cfg.read_double(s, "wrong_class_probability", wrong_class_probability);
-    confidence_true_mean = cfg.read_double(s, "confidence_true_mean", confidence_true_mean);
-    confidence_true_std = cfg.read_double(s, "confidence_true_std", confidence_true_std);
-    confidence_false_mean = cfg.read_double(s, "confidence_false_mean", confidence_false_mean);
-    confidence_false_std = cfg.read_double(s, "confidence_false_std", confidence_false_std);
-    min_confidence = cfg.read_double(s, "min_confidence", min_confidence);
-    reference_distance_m = cfg.read_double(s, "reference_distance_m", reference_distance_m);
-    persistent_variance_fraction = cfg.read_double(s, "persistent_variance_fraction", persistent_variance_fraction);
-    viewpoint_bin_deg = cfg.read_double(s, "viewpoint_bin_deg", viewpoint_bin_deg);
-    viewpoint_bin_m = cfg.read_double(s, "viewpoint_bin_m", viewpoint_bin_m);
-    noise_model_includes_extent = readStrictBool(cfg, s, "noise_model_includes_extent", noise_model_includes_extent);
-    min_centre_noise_fraction = cfg.read_double(s, "min_centre_noise_fraction", min_centre_noise_fraction);
-    check(prob(detection_probability), s, "detection_probability", "must be in [0, 1]");
-    check(default_noise_std_m > 0, s, "default_noise_std_m", "must be > 0");
-    check(z_std_m >= 0 && size_std_fraction >= 0 && yaw_std_rad >= 0, s, "z_std_m/size_std_fraction/yaw_std_rad",
-          "must be >= 0");
-    check(prob(wrong_class_probability), s, "wrong_class_probability", "must be in [0, 1]");
-    check(prob(confidence_true_mean) && prob(confidence_false_mean), s, "confidence_*_mean", "must be in [0, 1]");
-    check(confidence_true_std >= 0 && confidence_false_std >= 0, s, "confidence_*_std", "must be >= 0");
-    check(prob(min_confidence), s, "min_confidence", "must be in [0, 1]");
-    check(reference_distance_m > 0, s, "reference_distance_m", "must be > 0");
-    check(prob(persistent_variance_fraction), s, "persistent_variance_fraction", "must be in [0, 1]");
-    check(viewpoint_bin_deg > 0 && viewpoint_bin_m > 0, s, "viewpoint_bin_deg/viewpoint_bin_m", "must be > 0");
-    check(min_centre_noise_fraction > 0 && min_centre_noise_fraction <= 1, s, "min_centre_noise_fraction",
-          "must be in (0, 1]");
+const io::OptionTable<DetectorParams>& DetectorParams::table() {
+    using O = DetectorParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("detector")
+            .number("detection_probability", &O::detection_probability, "", kProbability, "probability that a visible object is detected")
+            .number("default_noise_std_m", &O::default_noise_std_m, "m", ValueRange::positive(), "centre std of classes without a noise model")
+            .number("z_std_m", &O::z_std_m, "m", ValueRange::atLeast(0), "std of the box centre height")
+            .number("size_std_fraction", &O::size_std_fraction, "", ValueRange::atLeast(0), "relative std of each box dimension")
+            .number("yaw_std_rad", &O::yaw_std_rad, "rad", ValueRange::atLeast(0), "std of the box yaw")
+            .number("wrong_class_probability", &O::wrong_class_probability, "", kProbability, "a true detection gets another class label, scored like a false one")
+            .number("confidence_true_mean", &O::confidence_true_mean, "", kProbability, "score of true detections: mean")
+            .number("confidence_true_std", &O::confidence_true_std, "", ValueRange::atLeast(0), "score of true detections: std")
+            .number("confidence_false_mean", &O::confidence_false_mean, "", kProbability, "score of false detections: mean")
+            .number("confidence_false_std", &O::confidence_false_std, "", ValueRange::atLeast(0), "score of false detections: std")
+            .number("min_confidence", &O::min_confidence, "", kProbability, "detections scoring below are not reported")
+            .number("reference_distance_m", &O::reference_distance_m, "m", ValueRange::positive(), "the class noise model holds at this distance; the along-ray error scales with distance / this")
+            .number("persistent_variance_fraction", &O::persistent_variance_fraction, "", kProbability, "fraction of the centre-noise variance that is persistent per object and viewpoint cell")
+            .number("viewpoint_bin_deg", &O::viewpoint_bin_deg, "deg", ValueRange::positive(), "viewpoint cells: bearing object -> camera sectors")
+            .number("viewpoint_bin_m", &O::viewpoint_bin_m, "m", ValueRange::positive(), "viewpoint cells: distance rings")
+            .flag("noise_model_includes_extent", &O::noise_model_includes_extent, "true = centre noise = the model's covariance minus the footprint's (side^2 / 12 per axis)")
+            .number("min_centre_noise_fraction", &O::min_centre_noise_fraction, "", ValueRange::aboveUpTo(0, 1), "lower bound of the centre-noise std per axis, as a fraction of the model's std");
+    return t;
 }
 
-void FalsePositiveParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    rate_per_frame = cfg.read_double(s, "rate_per_frame", rate_per_frame);
-    range_min_m = cfg.read_double(s, "range_min_m", range_min_m);
-    range_max_m = cfg.read_double(s, "range_max_m", range_max_m);
-    check(rate_per_frame >= 0 && rate_per_frame <= 30, s, "rate_per_frame", "must be in [0, 30]");
-    check(range_min_m > 0 && range_max_m >= range_min_m, s, "range_min_m/range_max_m", "need 0 < min <= max");
+const io::OptionTable<FalsePositiveParams>& FalsePositiveParams::table() {
+    using O = FalsePositiveParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("false_positives")
+            .number("rate_per_frame", &O::rate_per_frame, "", ValueRange::between(0, 30), "expected phantoms per camera frame (Poisson)")
+            .number("range_min_m", &O::range_min_m, "m", ValueRange::positive(), "phantom distance from the camera: minimum")
+            .number("range_max_m", &O::range_max_m, "m", ValueRange::positive(), "phantom distance from the camera: maximum")
+            .rule("range_max_m", [](const O& o) { return o.range_max_m >= o.range_min_m; }, "be >= range_min_m");
+    return t;
 }
 
-void PeopleParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    count = cfg.read_int(s, "count", count);
-    speed_min_mps = cfg.read_double(s, "speed_min_mps", speed_min_mps);
-    speed_max_mps = cfg.read_double(s, "speed_max_mps", speed_max_mps);
-    check(count >= 0 && count <= 100, s, "count", "must be in [0, 100]");
-    check(speed_min_mps > 0 && speed_max_mps >= speed_min_mps, s, "speed_min_mps/speed_max_mps", "need 0 < min <= max");
+const io::OptionTable<PeopleParams>& PeopleParams::table() {
+    using O = PeopleParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("people")
+            .integer("count", &O::count, ValueRange::between(0, 100), "people walking between rooms (class person, never in the map)")
+            .number("speed_min_mps", &O::speed_min_mps, "m/s", ValueRange::positive(), "walking speed: minimum")
+            .number("speed_max_mps", &O::speed_max_mps, "m/s", ValueRange::positive(), "walking speed: maximum")
+            .rule("speed_max_mps", [](const O& o) { return o.speed_max_mps >= o.speed_min_mps; }, "be >= speed_min_mps");
+    return t;
 }
 
-void LidarParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    enabled = readStrictBool(cfg, s, "enabled", enabled);
-    rate_hz = cfg.read_double(s, "rate_hz", rate_hz);
-    fov_deg = cfg.read_double(s, "fov_deg", fov_deg);
-    beams = cfg.read_int(s, "beams", beams);
-    max_range_m = cfg.read_double(s, "max_range_m", max_range_m);
-    range_std_m = cfg.read_double(s, "range_std_m", range_std_m);
-    x_m = cfg.read_double(s, "x_m", x_m);
-    y_m = cfg.read_double(s, "y_m", y_m);
-    height_m = cfg.read_double(s, "height_m", height_m);
-    yaw_deg = cfg.read_double(s, "yaw_deg", yaw_deg);
-    check(rate_hz > 0 && rate_hz <= 1000, s, "rate_hz", "must be in (0, 1000]");
-    check(fov_deg > 0 && fov_deg <= 360, s, "fov_deg", "must be in (0, 360]");
-    check(beams >= 2 && beams <= 100000, s, "beams", "must be in [2, 100000]");
-    check(max_range_m > 0 && max_range_m <= 1000, s, "max_range_m", "must be in (0, 1000]");
-    check(range_std_m >= 0 && range_std_m <= 10, s, "range_std_m", "must be in [0, 10]");
-    check(std::isfinite(x_m) && std::isfinite(y_m) && std::abs(x_m) < 10 && std::abs(y_m) < 10, s, "x_m/y_m",
-          "must be finite and within 10 m of the robot centre");
-    check(height_m > 0 && height_m < 10, s, "height_m", "must be in (0, 10)");
-    check(std::isfinite(yaw_deg), s, "yaw_deg", "must be finite");
+const io::OptionTable<LidarParams>& LidarParams::table() {
+    using O = LidarParams;
+    static const io::OptionTable<O> t =
+        io::OptionTable<O>("lidar")
+            .flag("enabled", &O::enabled, "write 2D scans (`--lidar` sets it)")
+            .number("rate_hz", &O::rate_hz, "Hz", ValueRange::aboveUpTo(0, 1000), "scans per second; at most one per odometry step is written")
+            .number("fov_deg", &O::fov_deg, "deg", ValueRange::aboveUpTo(0, 360), "aperture, centred on the sensor's x axis")
+            .integer("beams", &O::beams, ValueRange::between(2, 100000), "rays over the aperture (first and last at +-fov/2)")
+            .number("max_range_m", &O::max_range_m, "m", ValueRange::aboveUpTo(0, 1000), "rays without a hit within it are invalid")
+            .number("range_std_m", &O::range_std_m, "m", ValueRange::between(0, 10), "Gaussian range noise")
+            .number("x_m", &O::x_m, "m", ValueRange::open(-10, 10), "sensor position on the robot (robot frame): x")
+            .number("y_m", &O::y_m, "m", ValueRange::open(-10, 10), "sensor position on the robot (robot frame): y")
+            .number("height_m", &O::height_m, "m", ValueRange::open(0, 10), "scan plane above the floor: objects spanning it are seen")
+            .number("yaw_deg", &O::yaw_deg, "deg", ValueRange::finite(), "sensor heading on the robot");
+    return t;
 }
+
+void CameraParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void VisibilityParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void DetectorParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void FalsePositiveParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void PeopleParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
+void LidarParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) { table().load(cfg, s, *this); }
 
 }  // namespace simp::sim

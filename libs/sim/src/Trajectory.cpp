@@ -63,31 +63,6 @@ struct Driver {
 
 }  // namespace
 
-void TrajectoryParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    robot_radius_m = cfg.read_double(s, "robot_radius_m", robot_radius_m);
-    clearance_m = cfg.read_double(s, "clearance_m", clearance_m);
-    speed_min_mps = cfg.read_double(s, "speed_min_mps", speed_min_mps);
-    speed_max_mps = cfg.read_double(s, "speed_max_mps", speed_max_mps);
-    turn_rate_radps = cfg.read_double(s, "turn_rate_radps", turn_rate_radps);
-    turn_in_place_rad = cfg.read_double(s, "turn_in_place_rad", turn_in_place_rad);
-    spin_probability = cfg.read_double(s, "spin_probability", spin_probability);
-    waypoint_tolerance_m = cfg.read_double(s, "waypoint_tolerance_m", waypoint_tolerance_m);
-    const std::string order = cfg.read_string(s, "visit_order", coverage ? "coverage" : "shuffled");
-    if (order != "shuffled" && order != "coverage")
-        throw std::invalid_argument("[" + s + "] visit_order: '" + order + "' is not 'shuffled' or 'coverage'");
-    coverage = order == "coverage";
-    coverage_part_m = cfg.read_double(s, "coverage_part_m", coverage_part_m);
-    if (!(coverage_part_m > 0)) throw std::invalid_argument("[" + s + "] coverage_part_m must be > 0");
-    if (!(robot_radius_m >= 0) || !(clearance_m >= 0))
-        throw std::invalid_argument("[" + s + "] robot_radius_m and clearance_m must be >= 0");
-    if (!(speed_min_mps > 0) || !(speed_max_mps >= speed_min_mps))
-        throw std::invalid_argument("[" + s + "] speed_min_mps must be > 0 and <= speed_max_mps");
-    if (!(turn_rate_radps > 0)) throw std::invalid_argument("[" + s + "] turn_rate_radps must be > 0");
-    if (!(spin_probability >= 0 && spin_probability <= 1))
-        throw std::invalid_argument("[" + s + "] spin_probability must be in [0, 1]");
-    if (!(waypoint_tolerance_m > 0)) throw std::invalid_argument("[" + s + "] waypoint_tolerance_m must be > 0");
-}
-
 std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMap& rooms, double part_m) {
     const auto dist = clearance(cspace);
     // Goals only where the robot can drive: the max-clearance cell of a part may lie in a pocket

@@ -37,19 +37,6 @@ bool fits(const world::MapObject& o, const Raster& walls, const world::World& w,
 
 }  // namespace
 
-void ChangeParams::loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& s) {
-    fraction = cfg.read_double(s, "fraction", fraction);
-    shift_min_m = cfg.read_double(s, "shift_min_m", shift_min_m);
-    shift_max_m = cfg.read_double(s, "shift_max_m", shift_max_m);
-    rotation_std_deg = cfg.read_double(s, "rotation_std_deg", rotation_std_deg);
-    door_close_fraction = cfg.read_double(s, "door_close_fraction", door_close_fraction);
-    if (!(fraction >= 0 && fraction <= 1)) throw std::invalid_argument("[" + s + "] fraction must be in [0, 1]");
-    if (!(shift_min_m >= 0 && shift_max_m >= shift_min_m))
-        throw std::invalid_argument("[" + s + "] shift_min_m/shift_max_m: need 0 <= min <= max");
-    if (!(rotation_std_deg >= 0)) throw std::invalid_argument("[" + s + "] rotation_std_deg must be >= 0");
-    if (!(door_close_fraction <= 1)) throw std::invalid_argument("[" + s + "] door_close_fraction must be <= 1");
-}
-
 void closeDoor(world::World& world, const world::MapObject& door) {
     auto& grid = world.floorplan;
     const Raster walls = wallRaster(grid);

@@ -3,10 +3,13 @@
 /// The batch experiment description (config_ini/batch.ini, sections [batch], [metrics] and
 /// [map_metrics]; keys documented in doc/evaluation.md): sequences x localization configs x
 /// methods x seeds runs of simp-localize, and the built maps evaluated against their ground truth.
-/// Each field is read from the .ini key of the same name.
+/// Each field is read from the .ini key of the same name; the keys of the three sections are declared
+/// once (io::OptionTable: BatchConfig::table(), trajMetricsTable(), mapMetricsTable()), and loading, range
+/// checks, the unknown-key check, dump() and doc/evaluation.md's key tables derive from them.
 
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/TrajectoryMetrics.h>
+#include <simp/io/OptionTable.h>
 
 #include <string>
 #include <vector>
@@ -40,6 +43,8 @@ struct BatchConfig {
     std::string world;                       ///< localization map (world directory), required
     std::string map_name = "GT";             ///< label of the map in the tables ("Map" column)
     std::vector<BatchSequence> sequences;    ///< required, at least one
+    /// Column labels as given (`sequence_names`), one per sequence; empty: the directories' names.
+    std::vector<std::string> sequence_names;
     std::vector<std::string> methods{"simp", "edt", "d", "o"};  ///< simp-localize --method values
     int repetitions = 5;                     ///< runs per sequence, config and method
     int first_seed = 1;                      ///< seeds first_seed, first_seed + 1, ...
@@ -66,9 +71,23 @@ struct BatchConfig {
     /// The maps with their labels and ground truths resolved (defaults as documented above).
     std::vector<BatchMap> batchMaps() const;
 
-    /// Multi-line "key = value" dump of what is used.
+    /// The three sections, "key = value  // meaning" per key: readable back as a batch .ini.
     std::string dump() const;
+
+    /// [batch] keys, declared once.
+    static const io::OptionTable<BatchConfig>& table();
 };
+
+/// [metrics] keys (simp-eval batch and `traj --config`), declared once.
+const io::OptionTable<TrajMetricsParams>& trajMetricsTable();
+/// [map_metrics] keys (simp-eval batch and `map --config`), declared once.
+const io::OptionTable<MapMatchParams>& mapMetricsTable();
+
+/// The simp-localize --method values a batch runs, in the order of their paper labels (methodLabel()):
+/// the object sensor models (libs/maps' sensorModelTypeNames()) and the LiDAR ones of libs/localization.
+/// eval sits below both, so the list is declared here once and a test
+/// (BatchMethods.AreTheLocalizerSensorModels) holds it equal to localization::sensorModelNames().
+const std::vector<std::string>& batchMethodNames();
 
 /// Reads an .ini file. Lists (sequences, sequence_names, methods, localize_configs, maps, ...)
 /// are separated by spaces or commas. \throw std::runtime_error naming the file and key on a
@@ -77,6 +96,8 @@ BatchConfig loadBatchConfig(const std::string& ini_path);
 
 /// Reads [map_metrics] (max_center_dist_m, classes) of `ini` into `p` (simp-eval map --config too).
 void loadMapMetricsParams(const io::StrictIni& ini, MapMatchParams& p);
+/// Reads [metrics] of `ini` into `p` (simp-eval traj --config too).
+void loadTrajMetricsParams(const io::StrictIni& ini, TrajMetricsParams& p);
 
 /// Paper label of a method: simp -> Ours, edt -> EDT-MCL, d -> D-MCL, o -> O-MCL.
 std::string methodLabel(const std::string& method);

@@ -37,6 +37,7 @@ struct ValueRange {
 
     static ValueRange positive() { return {0, std::numeric_limits<double>::infinity(), true, false}; }
     static ValueRange atLeast(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, false}; }
+    static ValueRange atMost(double hi) { return {-std::numeric_limits<double>::infinity(), hi, false, false}; }
     static ValueRange between(double lo, double hi) { return {lo, hi, false, false}; }
     /// (lo, hi] / (lo, hi): probabilities and rates that must not be 0 (or 1).
     static ValueRange aboveUpTo(double lo, double hi) { return {lo, hi, true, false}; }
@@ -45,7 +46,7 @@ struct ValueRange {
     static ValueRange finite() { return {}; }
 
     bool contains(double v) const;
-    /// "> 0", ">= 3", "in [0, 1]", "in (0, 1]", "finite"
+    /// "> 0", ">= 3", "<= 1", "in [0, 1]", "in (0, 1]", "in [0, 4294967295]" (whole bounds exact), "finite"
     std::string text() const;
 };
 
@@ -203,12 +204,13 @@ class OptionTable {
                 << (e.unit.empty() ? "" : " (" + e.unit + ")") << "\n";
     }
 
-    /// The documentation: a Markdown table "| key | default | unit | allowed | meaning |" from `defaults`.
+    /// The documentation: a Markdown table "| key | default | unit | allowed | meaning |" from `defaults`
+    /// (an empty default reads "(empty)").
     std::string markdown(const Options& defaults) const {
         std::string s = "| key | default | unit | allowed | meaning |\n|---|---|---|---|---|\n";
         for (const auto& e : m_entries) {
             const std::string v = e.print(defaults, 6);
-            s += "| `" + e.key + "` | " + (e.text ? "`" + v + "`" : v) + " | " + e.unit + " | " + e.allowed + " | " + e.meaning + " |\n";
+            s += "| `" + e.key + "` | " + (v.empty() ? std::string("(empty)") : e.text ? "`" + v + "`" : v) + " | " + e.unit + " | " + e.allowed + " | " + e.meaning + " |\n";
         }
         return s;
     }

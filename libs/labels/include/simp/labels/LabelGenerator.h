@@ -9,6 +9,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <simp/camera/BoxProjection.h>
 #include <simp/camera/FloorPlanThresholds.h>
+#include <simp/io/OptionTable.h>
 #include <simp/labels/CameraFrames.h>
 #include <simp/labels/Detections2D.h>
 #include <simp/world/ObjectMapData.h>
@@ -38,6 +39,8 @@ struct LabelOptions {
     double near_m = 0.05;           ///< near clipping plane (m)
     VisibilityOptions visibility;   ///< visibility_pixel_step, visibility_occupied_threshold, ...
 
+    /// The keys, declared once: loading, checks, dump and doc/labels.md's key table derive from it.
+    static const io::OptionTable<LabelOptions>& table();
     void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
     /// \throw std::invalid_argument naming the key.
     void validate() const;

@@ -4,6 +4,7 @@
 /// walls of a given thickness; rasterized into a ROS-style occupancy grid and a room id map.
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/OptionTable.h>
 #include <simp/sim/Random.h>
 #include <simp/world/World.h>
 
@@ -51,9 +52,12 @@ struct OfficeParams {
     double kitchen_every_n_rooms = 8;  ///< one kitchen per this many rooms (at least one from 4 rooms)
     double meeting_fraction = 0.2;     ///< fraction of the remaining rooms that are meeting rooms
 
+    /// [office] keys, declared once (SimParams.cpp): loading, checks, dump, doc/simulator.md's table.
+    static const io::OptionTable<OfficeParams>& table();
     /// Reads the keys (same names as the fields) of `section`; missing keys keep defaults.
-    /// \throw std::invalid_argument naming the key of a value out of range.
+    /// \throw std::invalid_argument "[section] key: must be ..." naming the key of a bad value.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
+    /// The checks of the table (after command-line overrides). \throw std::invalid_argument "[office] key: ..."
     void validate() const;
 };
 

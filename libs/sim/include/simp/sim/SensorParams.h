@@ -1,10 +1,13 @@
 #pragma once
 /// \file SensorParams.h
 /// Knobs of the simulated camera rig, of visibility and of the detector (sections [cameras],
-/// [visibility], [detector], [false_positives] of sim.ini; doc/simulator.md lists every key).
+/// [visibility], [detector], [false_positives], [people], [lidar] of sim.ini). Each struct's keys are
+/// declared once in its table() (SensorParams.cpp): loading, range checks, dump and the key tables of
+/// doc/simulator.md derive from it.
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <simp/camera/PinholeCamera.h>
+#include <simp/io/OptionTable.h>
 
 #include <string>
 #include <vector>
@@ -13,7 +16,7 @@ namespace simp::sim {
 
 /// [cameras]: N cameras on a ring around the robot centre, optical axes horizontal.
 struct CameraParams {
-    int count = 4;                  ///< number of cameras
+    int count = 4;                  ///< number of cameras, in [1, 16]
     double first_yaw_deg = 0;       ///< yaw of camera 0 (deg, 0 = robot forward, 90 = left); camera i at +i*360/count
     double mount_radius_m = 0.1;    ///< distance of each camera from the robot centre along its yaw (m)
     double height_m = 0.63;         ///< camera height above the floor (m)
@@ -22,6 +25,7 @@ struct CameraParams {
     mrpt::img::TCamera intrinsics = camera::defaultIntrinsics();
     double rate_hz = 5;             ///< frame rate (Hz); a divisor of the odometry rate is best
 
+    static const io::OptionTable<CameraParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
@@ -38,8 +42,9 @@ struct VisibilityParams {
     double self_margin_m = 0.05;          ///< rays ignore walls this close to the object's own footprint (m)
     double max_occluded_fraction = 0.7;   ///< object occlusion: fraction of the 2D box hidden by nearer boxes
 
-    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section,
-                        std::size_t num_classes);
+    /// The per-class lists hold one value per class of simp::obs::defaultClassNames().
+    static const io::OptionTable<VisibilityParams>& table();
+    void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
 /// [detector]: what a visible object becomes.
@@ -73,6 +78,7 @@ struct DetectorParams {
     /// extent explains nearly all of the model's spread).
     double min_centre_noise_fraction = 0.25;
 
+    static const io::OptionTable<DetectorParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
@@ -81,14 +87,16 @@ struct FalsePositiveParams {
     double rate_per_frame = 0.05;  ///< expected phantoms per camera frame (Poisson)
     double range_min_m = 1.0, range_max_m = 5.0;  ///< phantom distance from the camera (m)
 
+    static const io::OptionTable<FalsePositiveParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
 /// [people]: people walking through the floor (class "person", never in the map).
 struct PeopleParams {
-    int count = 2;
-    double speed_min_mps = 0.6, speed_max_mps = 1.2;
+    int count = 2;                                     ///< people on the floor, in [0, 100]
+    double speed_min_mps = 0.6, speed_max_mps = 1.2;  ///< walking speed, uniform in [min, max] (m/s)
 
+    static const io::OptionTable<PeopleParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
@@ -107,6 +115,7 @@ struct LidarParams {
     double height_m = 0.3;        ///< scan plane above the floor (m): objects spanning it are seen
     double yaw_deg = 0.0;         ///< sensor heading on the robot (deg)
 
+    static const io::OptionTable<LidarParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 

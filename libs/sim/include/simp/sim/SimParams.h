@@ -1,12 +1,14 @@
 #pragma once
 /// \file SimParams.h
-/// All knobs of `simp-sim sequence`, one struct per sim.ini section.
+/// All knobs of `simp-sim sequence`, one struct per sim.ini section, each section's keys declared
+/// once as an io::OptionTable (SimParams.cpp, SensorParams.cpp; doc/simulator.md's key tables).
 
 #include <mrpt/config/CConfigFileBase.h>
 #include <simp/sim/SensorParams.h>
 #include <simp/sim/Trajectory.h>
 #include <simp/sim/WorldChanges.h>
 
+#include <ostream>
 #include <string>
 
 namespace simp::sim {
@@ -23,6 +25,7 @@ struct OdometryParams {
     double minStdPHI = 0.2 * M_PI / 180.0;  ///< rad
     double noise_scale = 1.0; ///< the drawn increment noise is this times the model's std (0 = perfect odometry)
 
+    static const io::OptionTable<OdometryParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
@@ -50,6 +53,10 @@ struct SimParams {
     /// section and key. kidnap_at_s <= duration_s is checked by validateKidnap(), once
     /// command-line options have overridden the duration.
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg);
+    /// [sequence] keys (the fields above the sub-structs).
+    static const io::OptionTable<SimParams>& table();
+    /// Every section, readable back as an .ini: what a sequence was simulated with.
+    void dumpToTextStream(std::ostream& out) const;
 
     /// \throw std::invalid_argument naming `what` (the option or key that set kidnap_at_s) when
     /// kidnap_at_s is not finite or lies beyond duration_s.

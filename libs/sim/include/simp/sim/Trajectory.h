@@ -5,6 +5,7 @@
 /// large heading changes and now and then spinning on the spot in a room.
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/OptionTable.h>
 #include <simp/io/Tum.h>
 #include <simp/sim/Random.h>
 #include <simp/sim/Raster.h>
@@ -35,6 +36,8 @@ struct TrajectoryParams {
     /// In coverage, every room is cut into parts of about this size (m, at most 2 x 2) with a goal each.
     double coverage_part_m = 3.0;
 
+    /// [trajectory] keys, declared once (SimParams.cpp).
+    static const io::OptionTable<TrajectoryParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 

@@ -4,6 +4,7 @@
 /// moved (shifted and rotated) and added; doors closed (door object kept, gap blocked).
 
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/OptionTable.h>
 #include <simp/sim/Random.h>
 #include <simp/world/World.h>
 
@@ -21,6 +22,8 @@ struct ChangeParams {
     double rotation_std_deg = 30;    ///< and rotated by N(0, std) (deg)
     double door_close_fraction = -1; ///< fraction of doors closed; < 0: the same as `fraction`
 
+    /// [changes] keys, declared once (SimParams.cpp).
+    static const io::OptionTable<ChangeParams>& table();
     void loadFromConfig(const mrpt::config::CConfigFileBase& cfg, const std::string& section);
 };
 
