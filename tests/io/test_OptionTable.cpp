@@ -183,3 +183,23 @@ TEST(OptionTable, DocumentationPrintsWholeBoundsExactlyAndNamesAnEmptyDefault) {
     Seeded s;
     EXPECT_EQ(errorOf([&] { t.load(mrpt::config::CConfigFileMemory("[s]\nlimit = 2\n"), "s", s); }), "[s] limit: must be <= 1, got 2");
 }
+
+TEST(OptionTable, AnEmptyValueDumpsAsQuotesAndReadsBackEmpty) {
+    Rig r;
+    r.names = "";
+    std::ostringstream dump;
+    rigTable().dump(r, dump);
+    EXPECT_NE(dump.str().find("names     = \"\"  // own syntax"), std::string::npos) << dump.str();
+    // written bare, MRPT's parser would hand the comment "// own syntax..." over as the value
+    EXPECT_EQ(rigFrom(dump.str()).names, "");
+}
+
+TEST(OptionTable, APipeInACellDoesNotSplitTheDocumentationRow) {
+    struct Ratio {
+        double r = 0.5;
+    };
+    const auto t = OptionTable<Ratio>("q").number("r", &Ratio::r, "", ValueRange::between(0, 1), "explained share |S| / |D|");
+    EXPECT_EQ(t.markdown(Ratio{}),
+              "| key | default | unit | allowed | meaning |\n|---|---|---|---|---|\n"
+              "| `r` | 0.5 |  | in [0, 1] | explained share \\|S\\| / \\|D\\| |\n");
+}

@@ -193,24 +193,26 @@ class OptionTable {
             if (!r.holds(o)) throw std::invalid_argument("[" + section + "] " + r.key + ": must " + r.must);
     }
 
-    /// "[section]" and one "key = value  // meaning (unit)" line per key: readable back as an .ini.
+    /// "[section]" and one "key = value  // meaning (unit)" line per key: readable back as an .ini
+    /// (an empty value is written "": with nothing before it, the comment would be read as the value).
     void dump(const Options& o, std::ostream& out) const { dump(o, out, m_section); }
     void dump(const Options& o, std::ostream& out, const std::string& section) const {
         std::size_t width = 0;
         for (const auto& e : m_entries) width = std::max(width, e.key.size());
         out << "[" << section << "]\n";
         for (const auto& e : m_entries)
-            out << e.key << std::string(width - e.key.size(), ' ') << " = " << e.print(o, 6) << "  // " << e.meaning
+            out << e.key << std::string(width - e.key.size(), ' ') << " = " << dumpValue(e.print(o, 6)) << "  // " << e.meaning
                 << (e.unit.empty() ? "" : " (" + e.unit + ")") << "\n";
     }
 
     /// The documentation: a Markdown table "| key | default | unit | allowed | meaning |" from `defaults`
-    /// (an empty default reads "(empty)").
+    /// (an empty default reads "(empty)"; a '|' in a cell is escaped so it does not split the row).
     std::string markdown(const Options& defaults) const {
         std::string s = "| key | default | unit | allowed | meaning |\n|---|---|---|---|---|\n";
         for (const auto& e : m_entries) {
             const std::string v = e.print(defaults, 6);
-            s += "| `" + e.key + "` | " + (v.empty() ? std::string("(empty)") : e.text ? "`" + v + "`" : v) + " | " + e.unit + " | " + e.allowed + " | " + e.meaning + " |\n";
+            const std::string value = v.empty() ? std::string("(empty)") : e.text ? "`" + v + "`" : v;
+            s += "| `" + cell(e.key) + "` | " + cell(value) + " | " + cell(e.unit) + " | " + cell(e.allowed) + " | " + cell(e.meaning) + " |\n";
         }
         return s;
     }
@@ -252,6 +254,17 @@ class OptionTable {
         std::function<bool(const Options&)> holds;
         std::string must;
     };
+
+    static std::string dumpValue(const std::string& v) { return v.empty() ? std::string("\"\"") : v; }
+    /// GitHub Markdown ends a table cell at every unescaped '|', also inside `code`.
+    static std::string cell(const std::string& text) {
+        std::string out;
+        for (const char c : text) {
+            if (c == '|') out += '\\';
+            out += c;
+        }
+        return out;
+    }
 
     template <class T>
     static std::string format(const T& v, int precision) {
