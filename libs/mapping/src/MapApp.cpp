@@ -191,6 +191,7 @@ void MapApp::run() {
     if (updating) {
         const fs::path dir(m_args.out_dir);
         world::saveChangesFile(m_update.changes, (dir / "changes.json").string());
+        saveUpdateEvidence(m_update.evidence, (dir / "update_evidence.tsv").string());
         eval::writePng((dir / "changes.png").string(),
                        eval::drawChangeMap(result.floorplan, result.objects, m_update.changes));
         std::map<std::string, int> per_kind;

@@ -28,6 +28,7 @@
 /// Objects of m0 the session never expected to see stay as they were.
 
 #include <simp/mapping/ObjectMapBuilder.h>
+#include <simp/mapping/UpdateEvidence.h>
 #include <simp/world/ChangesFile.h>
 #include <simp/world/ObjectMapData.h>
 
@@ -39,6 +40,9 @@ struct MapUpdateResult {
     world::ObjectMapData map;                 ///< the updated map (builder's confirmed map minus removed objects)
     std::vector<world::ChangeRecord> changes; ///< removed, moved, added, each with a confidence
     std::size_t unseen = 0;                   ///< objects of m0 this session never expected to see (kept)
+    /// Per object of m0 (its order), then per new object of the builder's confirmed map: the
+    /// evidence and the decision (M/update_evidence.tsv).
+    std::vector<UpdateEvidence> evidence;
 };
 
 /// The changes between `m0` (the map given to the builder's setMap) and what the builder made of it.
