@@ -164,6 +164,45 @@ TEST(MapUpdate, AMoveAlongAWallIsReportedAsMoved) {
     EXPECT_LT((e_now->box.center - kCabinetEMoved.box.center).head<2>().norm(), 0.1);
 }
 
+// A cabinet against the east wall, and the same moved 0.65 m towards the room: from the robot's
+// circle the new place stands between the camera and the old place and hides it.
+const test::TrueObject kCabinetF{1, makeUprightBox({7.65, 3.0, 0.9}, {0.5, 1.2, 1.8}, 0.0)};
+const test::TrueObject kCabinetFMoved{1, makeUprightBox({7.0, 3.0, 0.9}, {0.5, 1.2, 1.8}, 0.0)};
+
+TEST(MapUpdate, AMoveWhoseNewPlaceHidesTheOldPlaceIsReportedAsMoved) {
+    // Without the rule of DisplacedCopies.h the new box occludes the old one, which is never
+    // expected, so never missed: the new place was reported as an addition and the old one stayed.
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan, {kTableA, kCabinetB, kTableC, kCabinetF});
+    ASSERT_EQ(m0.objects.size(), 4u);
+    const auto* f = nearest(m0, kCabinetF);
+    ASSERT_TRUE(f);
+
+    ObjectMapBuilder b(test::testOptions());
+    b.setMap(m0, true);
+    b.setFloorPlan(plan, {});
+    session(b, {kTableA, kCabinetB, kTableC, kCabinetFMoved}, 1, 2);
+    const SessionEvidence e = b.evidenceOf(f->id);
+    // The old place was expected only behind its possible new place, and missed there.
+    EXPECT_EQ(e.windows_matched, 0);
+    EXPECT_GE(e.windows_missed_behind_new, 3);
+    EXPECT_LT(e.windows_missed, 3);  // the new box in front: hardly ever expected otherwise
+    const MapUpdateResult r = detectChanges(m0, b);
+    ASSERT_EQ(r.changes.size(), 1u);
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "moved");
+    EXPECT_EQ(ch.id_before, f->id);
+    EXPECT_EQ(ch.id_after, f->id);
+    ASSERT_TRUE(ch.after.has_value());
+    EXPECT_LT((ch.after->center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+    // The updated map: F at its new place under its id, nothing left at the old one.
+    ASSERT_EQ(r.map.objects.size(), 4u);
+    const auto* f_now = nearest(r.map, kCabinetF);
+    ASSERT_TRUE(f_now);
+    EXPECT_EQ(f_now->id, f->id);
+    EXPECT_LT((f_now->box.center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+}
+
 TEST(MapUpdate, AnUnchangedWorldReportsNothing) {
     const auto plan = test::makeFloorPlan(8, 6);
     const auto m0 = earlierMap(plan);

@@ -67,6 +67,40 @@ bool isGone(const SessionEvidence& e, double p_present, const MappingOptions& op
             p_present < opt.update_removal_alpha);
 }
 
+/// Leaves out of `fresh` (and the updated map) the new objects that are twins of an object of m0
+/// this session matched: within update_twin_max_distance_m, of its class, matched in fewer than
+/// update_twin_max_window_ratio times its windows. A twin is the detector's error from some
+/// viewpoints (along a desk, across a cabinet row); a real object next to it would be seen from
+/// about as many viewpoints as its neighbour.
+void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
+               std::vector<std::size_t>& fresh, std::vector<bool>& drop,
+               const std::unordered_map<std::int64_t, std::size_t>& row_of) {
+    const MappingOptions& opt = builder.options();
+    if (opt.update_twin_max_window_ratio <= 0) return;
+    std::vector<std::size_t> kept;
+    for (const std::size_t k : fresh) {
+        const world::MapObject& n = r.map.objects[k];
+        const int w_new = builder.evidenceOf(n.id).windows_matched;
+        bool twin = false;
+        for (const world::MapObject& o : r.map.objects) {
+            if (!builder.isGivenObject(o.id) || r.map.class_names.at(static_cast<std::size_t>(o.class_id)) !=
+                                                     r.map.class_names.at(static_cast<std::size_t>(n.class_id)))
+                continue;
+            const int w_old = builder.evidenceOf(o.id).windows_matched;
+            if (w_old > 0 && planarDistance(o.box, n.box) < opt.update_twin_max_distance_m &&
+                w_new < opt.update_twin_max_window_ratio * w_old)
+                twin = true;
+        }
+        if (!twin) {
+            kept.push_back(k);
+            continue;
+        }
+        drop[k] = true;
+        r.evidence[row_of.at(n.id)].decision = "twin";
+    }
+    fresh = std::move(kept);
+}
+
 }  // namespace
 
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder) {
@@ -150,6 +184,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
             r.evidence.back().decision = "too-few-windows";
         }
     }
+    dropTwins(builder, r, fresh, drop, row_of);
     // Nearest object of the other origin and the same class, for the evidence file.
     for (UpdateEvidence& a : r.evidence)
         for (const UpdateEvidence& b : r.evidence) {

@@ -170,6 +170,12 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// class stands within update_move_max_distance_m: detections of its new place, or of a
     /// neighbour, still reach the old object (moves along a wall, a row of cabinets).
     double update_reassociate_max_seen_fraction = 0.3;
+    /// A new object within update_twin_max_distance_m of an object of the earlier map of its class
+    /// that this session matched, and matched in fewer than update_twin_max_window_ratio times as
+    /// many windows as it, is that object's twin (the detector's error from some viewpoints), not
+    /// an addition: a real object next to it is seen from about as many viewpoints. 0 = off.
+    double update_twin_max_distance_m = 1.0;
+    double update_twin_max_window_ratio = 0.5;
     /// @}
 
     /// @name Detection filter

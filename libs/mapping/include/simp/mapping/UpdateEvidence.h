@@ -22,7 +22,7 @@ struct UpdateEvidence {
     double class_rate = 0;        ///< the class's match rate this session (earlier objects; 0 for new)
     double p_present = 1;         ///< binomial P(<= matched | expected, class_rate) (earlier objects)
     /// earlier: kept | unseen | merged | removed | moved | re-estimated;
-    /// new: added | move-target | too-few-windows
+    /// new: added | move-target | too-few-windows | twin
     std::string decision;
     std::int64_t nearest_id = -1;  ///< nearest object of the other origin and the same class (-1: none)
     double nearest_m = -1;         ///< its planar centre distance (m; -1: none)
