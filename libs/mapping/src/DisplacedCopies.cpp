@@ -11,7 +11,7 @@ std::vector<std::vector<int>> displacedCopyCandidates(const world::ObjectMapData
     std::vector<int> fresh;
     for (std::size_t k = 0; k < objs.size(); ++k)
         if (objs[k].id >= first_new_id) fresh.push_back(static_cast<int>(k));
-    if (fresh.empty()) return out;
+    if (fresh.empty() || max_distance_m <= 0) return out;
     for (std::size_t k = 0; k < objs.size(); ++k) {
         const world::MapObject& o = objs[k];
         if (o.id >= first_new_id) continue;

@@ -67,12 +67,12 @@ void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int curre
         if (!m_groups_valid || m_groups.size() != n) updateGroups();
         prm.group = &m_groups;
     }
-    if (m_earlier_session) {
+    if (m_earlier_session && m_options.update_unhide_max_distance_m > 0) {
         // A new object of this session may be an earlier object moved a short way: where it stands
         // between the camera and the old place, it must not hide the old place, or the old object
         // is never expected there, never missed, and the move is reported as an addition.
         if (!m_unhidden_valid || m_unhidden_by.size() != n) {
-            m_unhidden_by = displacedCopyCandidates(m_g, m_first_built_id, m_options.update_move_max_distance_m);
+            m_unhidden_by = displacedCopyCandidates(m_g, m_first_built_id, m_options.update_unhide_max_distance_m);
             m_unhidden_valid = true;
         }
         prm.unhidden_by = &m_unhidden_by;
