@@ -68,7 +68,7 @@ bool isGone(const SessionEvidence& e, double p_present, const MappingOptions& op
 }
 
 /// Leaves out of `fresh` (and the updated map) the new objects that are twins of an object of m0
-/// this session matched: within update_twin_max_distance_m, of its class, matched in fewer than
+/// this session matched: within update_twin_max_distance_m (or that object's length), of its class, matched in fewer than
 /// update_twin_max_window_ratio times its windows. A twin is the detector's error from some
 /// viewpoints (along a desk, across a cabinet row); a real object next to it would be seen from
 /// about as many viewpoints as its neighbour.
@@ -87,7 +87,9 @@ void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
                                                      r.map.class_names.at(static_cast<std::size_t>(n.class_id)))
                 continue;
             const int w_old = builder.evidenceOf(o.id).windows_matched;
-            if (w_old > 0 && planarDistance(o.box, n.box) < opt.update_twin_max_distance_m &&
+            // Along a long object (a desk, a sofa) its twins lie up to its length away.
+            const double radius = std::max(opt.update_twin_max_distance_m, std::max(o.box.size.x(), o.box.size.y()));
+            if (w_old > 0 && planarDistance(o.box, n.box) < radius &&
                 w_new < opt.update_twin_max_window_ratio * w_old)
                 twin = true;
         }

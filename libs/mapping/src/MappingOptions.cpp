@@ -191,7 +191,7 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
                     "a new object this close to an object of M0 of its class does not hide it (its possible new place); the "
                     "windows that expected M0's object only so count for a move, not a removal; 0 = off")
             .number("update_twin_max_distance_m", &O::update_twin_max_distance_m, "m", between(0, 100),
-                    "a new object this close to an object of M0 of its class that the session matched ...")
+                    "a new object this close to an object of M0 of its class that the session matched (or within that object's length) ...")
             .number("update_twin_max_window_ratio", &O::update_twin_max_window_ratio, "", between(0, 1e6),
                     "... and matched in fewer than this times its windows is its twin: neither added nor a move's new place; 0 = off")
             .number("room_door_width_m", &O::room_door_width_m, "m", between(0, 100), "segmentation erosion (see \"Rooms\")")

@@ -20,6 +20,12 @@
 ///    (detections of its new place or of a neighbour, along a wall, still reach it). It keeps its
 ///    m0 id. A pair closer
 ///    than update_min_move_m is the object re-estimated: no change, the new box replaces it;
+///    The windows in which the object was expected only because a new object of its class within
+///    update_unhide_max_distance_m (its possible new place) did not hide it (DisplacedCopies.h,
+///    SessionEvidence::windows_missed_behind_new) count as misses for a move, never for a removal;
+///  - twins: a new object within update_twin_max_distance_m (or the m0 object's length) of an m0
+///    object of its class that this session matched, matched in fewer than
+///    update_twin_max_window_ratio times its windows, is its twin: neither added nor a new place;
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few
