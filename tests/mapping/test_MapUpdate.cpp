@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
+#include <simp/mapping/DisplacedCopies.h>
 #include <simp/mapping/MapUpdate.h>
 #include <simp/world/World.h>
 
@@ -201,6 +202,24 @@ TEST(MapUpdate, AMoveWhoseNewPlaceHidesTheOldPlaceIsReportedAsMoved) {
     ASSERT_TRUE(f_now);
     EXPECT_EQ(f_now->id, f->id);
     EXPECT_LT((f_now->box.center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+}
+
+TEST(MapUpdate, DisplacedCopyCandidatesAreNewObjectsOfTheClassNearby) {
+    simp::world::ObjectMapData m;
+    m.class_names = kClasses;
+    const auto obj = [](std::int64_t id, int cls, double x) {
+        simp::world::MapObject o;
+        o.id = id, o.class_id = cls, o.box = makeUprightBox({x, 1.0, 0.5}, {0.5, 0.5, 1.0}, 0.0);
+        return o;
+    };
+    // Earlier objects 1 (cabinet at x = 1) and 2 (table at x = 1); new ones from id 10.
+    m.objects = {obj(1, 1, 1.0), obj(2, 0, 1.0), obj(10, 1, 1.8), obj(11, 1, 2.5), obj(12, 0, 1.5), obj(13, 1, 0.5)};
+    const auto c = displacedCopyCandidates(m, 10, 1.0);
+    ASSERT_EQ(c.size(), m.objects.size());
+    EXPECT_EQ(c[0], (std::vector<int>{2, 5}));  // cabinets 0.8 and 0.5 m away; not the one 1.5 m away
+    EXPECT_EQ(c[1], (std::vector<int>{4}));     // the table only
+    for (std::size_t k = 2; k < c.size(); ++k) EXPECT_TRUE(c[k].empty());  // new objects: none
+    for (const auto& l : displacedCopyCandidates(m, 10, 0.0)) EXPECT_TRUE(l.empty());  // 0 = off
 }
 
 TEST(MapUpdate, AnUnchangedWorldReportsNothing) {

@@ -199,7 +199,7 @@ void MapApp::run() {
         out << "simp-map: changes against '" << m_args.update_dir << "': " << per_kind["removed"] << " removed, "
             << per_kind["moved"] << " moved, " << per_kind["added"] << " added; " << m_update.unseen
             << " objects of the earlier map not in view this session (kept); " << (dir / "changes.json").string()
-            << ", " << (dir / "changes.png").string() << "\n";
+            << ", " << (dir / "changes.png").string() << ", " << (dir / "update_evidence.tsv").string() << "\n";
     }
     if (!m_args.scene_path.empty()) {
         eval::MapLayers layers;
