@@ -92,3 +92,25 @@ TEST(Occluders, WallsStillOccludeBehindADoorGap) {
     EXPECT_EQ(v[1].visible_px, 0);
     EXPECT_EQ(v[0].visible_px, v[0].covered_px);
 }
+
+TEST(Occluders, ZBufferUnhiddenByIsOneWay) {
+    // A cabinet 1.5 m ahead hides one of the same size 2.5 m ahead; with unhidden_by = {0} for the
+    // far one, the near one no longer hides it (counted in unhidden_px), and it still hides nothing
+    // for the near one. A map update's possible new place in front of the old (DisplacedCopies.h).
+    const std::vector<simp::geometry::Box3D> boxes{makeUprightBox({1.5, 0, 0.9}, {0.5, 1.0, 1.8}, 0.0),
+                                                   makeUprightBox({2.5, 0, 0.9}, {0.5, 1.0, 1.8}, 0.0)};
+    ZBufferRenderer r;
+    ZBufferParams p;
+    std::vector<BoxView> plain, unhidden;
+    r.render(forwardCamera(), boxes, nullptr, p, plain);
+    ASSERT_GT(plain[1].covered_px, 20);
+    EXPECT_EQ(plain[1].visible_px, 0);
+    const std::vector<std::vector<int>> by{{}, {0}};
+    p.unhidden_by = &by;
+    r.render(forwardCamera(), boxes, nullptr, p, unhidden);
+    EXPECT_EQ(unhidden[1].visible_px, unhidden[1].covered_px);
+    EXPECT_EQ(unhidden[1].unhidden_px, unhidden[1].covered_px);
+    EXPECT_NEAR(unhidden[1].occludedFractionByAll(), 1.0, 1e-12);
+    EXPECT_EQ(unhidden[0].visible_px, plain[0].visible_px);
+    EXPECT_EQ(unhidden[0].unhidden_px, 0);
+}

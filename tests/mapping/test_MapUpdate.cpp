@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
+#include <simp/mapping/DisplacedCopies.h>
 #include <simp/mapping/MapUpdate.h>
 #include <simp/world/World.h>
 
@@ -162,6 +163,63 @@ TEST(MapUpdate, AMoveAlongAWallIsReportedAsMoved) {
     ASSERT_TRUE(e_now);
     EXPECT_EQ(e_now->id, e->id);
     EXPECT_LT((e_now->box.center - kCabinetEMoved.box.center).head<2>().norm(), 0.1);
+}
+
+// A cabinet against the east wall, and the same moved 0.65 m towards the room: from the robot's
+// circle the new place stands between the camera and the old place and hides it.
+const test::TrueObject kCabinetF{1, makeUprightBox({7.65, 3.0, 0.9}, {0.5, 1.2, 1.8}, 0.0)};
+const test::TrueObject kCabinetFMoved{1, makeUprightBox({7.0, 3.0, 0.9}, {0.5, 1.2, 1.8}, 0.0)};
+
+TEST(MapUpdate, AMoveWhoseNewPlaceHidesTheOldPlaceIsReportedAsMoved) {
+    // Without the rule of DisplacedCopies.h the new box occludes the old one, which is never
+    // expected, so never missed: the new place was reported as an addition and the old one stayed.
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan, {kTableA, kCabinetB, kTableC, kCabinetF});
+    ASSERT_EQ(m0.objects.size(), 4u);
+    const auto* f = nearest(m0, kCabinetF);
+    ASSERT_TRUE(f);
+
+    ObjectMapBuilder b(test::testOptions());
+    b.setMap(m0, true);
+    b.setFloorPlan(plan, {});
+    session(b, {kTableA, kCabinetB, kTableC, kCabinetFMoved}, 1, 2);
+    const SessionEvidence e = b.evidenceOf(f->id);
+    // The old place was expected only behind its possible new place, and missed there.
+    EXPECT_EQ(e.windows_matched, 0);
+    EXPECT_GE(e.windows_missed_behind_new, 3);
+    EXPECT_LT(e.windows_missed, 3);  // the new box in front: hardly ever expected otherwise
+    const MapUpdateResult r = detectChanges(m0, b);
+    ASSERT_EQ(r.changes.size(), 1u);
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "moved");
+    EXPECT_EQ(ch.id_before, f->id);
+    EXPECT_EQ(ch.id_after, f->id);
+    ASSERT_TRUE(ch.after.has_value());
+    EXPECT_LT((ch.after->center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+    // The updated map: F at its new place under its id, nothing left at the old one.
+    ASSERT_EQ(r.map.objects.size(), 4u);
+    const auto* f_now = nearest(r.map, kCabinetF);
+    ASSERT_TRUE(f_now);
+    EXPECT_EQ(f_now->id, f->id);
+    EXPECT_LT((f_now->box.center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+}
+
+TEST(MapUpdate, DisplacedCopyCandidatesAreNewObjectsOfTheClassNearby) {
+    simp::world::ObjectMapData m;
+    m.class_names = kClasses;
+    const auto obj = [](std::int64_t id, int cls, double x) {
+        simp::world::MapObject o;
+        o.id = id, o.class_id = cls, o.box = makeUprightBox({x, 1.0, 0.5}, {0.5, 0.5, 1.0}, 0.0);
+        return o;
+    };
+    // Earlier objects 1 (cabinet at x = 1) and 2 (table at x = 1); new ones from id 10.
+    m.objects = {obj(1, 1, 1.0), obj(2, 0, 1.0), obj(10, 1, 1.8), obj(11, 1, 2.5), obj(12, 0, 1.5), obj(13, 1, 0.5)};
+    const auto c = displacedCopyCandidates(m, 10, 1.0);
+    ASSERT_EQ(c.size(), m.objects.size());
+    EXPECT_EQ(c[0], (std::vector<int>{2, 5}));  // cabinets 0.8 and 0.5 m away; not the one 1.5 m away
+    EXPECT_EQ(c[1], (std::vector<int>{4}));     // the table only
+    for (std::size_t k = 2; k < c.size(); ++k) EXPECT_TRUE(c[k].empty());  // new objects: none
+    for (const auto& l : displacedCopyCandidates(m, 10, 0.0)) EXPECT_TRUE(l.empty());  // 0 = off
 }
 
 TEST(MapUpdate, AnUnchangedWorldReportsNothing) {

@@ -63,9 +63,21 @@ void ZBufferRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int obje
                         continue;
                     }
                     const int front = m_id[idx];
-                    const int g = (*m_group)[static_cast<std::size_t>(object)];
-                    if (front == object || (front >= 0 && g >= 0 && (*m_group)[static_cast<std::size_t>(front)] == g))
+                    if (front == object) {
                         ++(*m_out)[object].visible_px;
+                        continue;
+                    }
+                    if (front < 0) continue;
+                    const auto o = static_cast<std::size_t>(object), f = static_cast<std::size_t>(front);
+                    if (m_group != nullptr && (*m_group)[o] >= 0 && (*m_group)[f] == (*m_group)[o]) {
+                        ++(*m_out)[object].visible_px;
+                        continue;
+                    }
+                    if (m_unhidden_by != nullptr && z < m_wall_depth[idx] &&
+                        std::binary_search((*m_unhidden_by)[o].begin(), (*m_unhidden_by)[o].end(), front)) {
+                        ++(*m_out)[object].visible_px;
+                        ++(*m_out)[object].unhidden_px;
+                    }
                     continue;
                 }
                 if (m_stamp[idx] != object) {
@@ -128,13 +140,15 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
     std::array<Eigen::Vector3d, 8> face_in, face_clip, face_px;
     m_group = prm.group != nullptr && prm.group->size() == boxes.size() ? prm.group : nullptr;
     m_occludes = prm.occludes != nullptr && prm.occludes->size() == boxes.size() ? prm.occludes : nullptr;
+    m_unhidden_by = prm.unhidden_by != nullptr && prm.unhidden_by->size() == boxes.size() ? prm.unhidden_by : nullptr;
+    const bool per_box_pass = m_group != nullptr || m_unhidden_by != nullptr;  // every box in pass 1
     bool any_see_through = false;
     for (std::size_t k = 0; k < boxes.size() && !any_see_through; ++k) any_see_through = seeThrough(static_cast<int>(k));
-    const int n_pass = m_group != nullptr || any_see_through ? 2 : 1;
+    const int n_pass = per_box_pass || any_see_through ? 2 : 1;
     if (n_pass == 2) m_stamp_visible.assign(npx, -1);
     for (m_pass = 0; m_pass < n_pass; ++m_pass)
     for (std::size_t k = 0; k < boxes.size(); ++k) {
-        if (m_pass == 1 && m_group == nullptr && !seeThrough(static_cast<int>(k))) continue;  // counted from m_id
+        if (m_pass == 1 && !per_box_pass && !seeThrough(static_cast<int>(k))) continue;  // counted from m_id
         const geometry::Box3D& box = boxes[k];
         BoxView& view = out[k];
         view.distance_m = (box.center - t_wc).norm();
@@ -166,12 +180,13 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
         const double ih = std::max(0.0, std::min(v_max, double(cam.heightPx())) - std::max(v_min, 0.0));
         view.truncated_fraction = area > 0 ? std::clamp(1.0 - iw * ih / area, 0.0, 1.0) : 1.0;
     }
-    if (m_group == nullptr)
+    if (!per_box_pass)
         for (std::size_t i = 0; i < npx; ++i)
             if (m_id[i] >= 0) ++out[m_id[i]].visible_px;
     m_pass = 0;
     m_out = nullptr;
     m_occludes = nullptr;
+    m_unhidden_by = nullptr;
 }
 
 }  // namespace simp::camera

@@ -191,6 +191,7 @@ void MapApp::run() {
     if (updating) {
         const fs::path dir(m_args.out_dir);
         world::saveChangesFile(m_update.changes, (dir / "changes.json").string());
+        saveUpdateEvidence(m_update.evidence, (dir / "update_evidence.tsv").string());
         eval::writePng((dir / "changes.png").string(),
                        eval::drawChangeMap(result.floorplan, result.objects, m_update.changes));
         std::map<std::string, int> per_kind;
@@ -198,7 +199,7 @@ void MapApp::run() {
         out << "simp-map: changes against '" << m_args.update_dir << "': " << per_kind["removed"] << " removed, "
             << per_kind["moved"] << " moved, " << per_kind["added"] << " added; " << m_update.unseen
             << " objects of the earlier map not in view this session (kept); " << (dir / "changes.json").string()
-            << ", " << (dir / "changes.png").string() << "\n";
+            << ", " << (dir / "changes.png").string() << ", " << (dir / "update_evidence.tsv").string() << "\n";
     }
     if (!m_args.scene_path.empty()) {
         eval::MapLayers layers;

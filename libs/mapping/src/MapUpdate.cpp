@@ -56,6 +56,53 @@ std::vector<double> classMatchRates(const world::ObjectMapData& m0, const Object
     return rate;
 }
 
+/// The object may have left: missed in >= update_min_missed_windows windows and matched in fewer
+/// than update_max_seen_fraction of its expected windows, or in fewer than
+/// update_reassociate_max_seen_fraction and unlikely for a present object (`p_present`).
+bool isGone(const SessionEvidence& e, double p_present, const MappingOptions& opt) {
+    const int expected = e.windows_matched + e.windows_missed;
+    if (e.windows_missed < opt.update_min_missed_windows) return false;
+    return e.windows_matched < opt.update_max_seen_fraction * expected ||
+           (e.windows_matched < opt.update_reassociate_max_seen_fraction * expected &&
+            p_present < opt.update_removal_alpha);
+}
+
+/// Leaves out of `fresh` (and the updated map) the new objects that are twins of an object of m0
+/// this session matched: within update_twin_max_distance_m (or that object's length), of its class, matched in fewer than
+/// update_twin_max_window_ratio times its windows. A twin is the detector's error from some
+/// viewpoints (along a desk, across a cabinet row); a real object next to it would be seen from
+/// about as many viewpoints as its neighbour.
+void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
+               std::vector<std::size_t>& fresh, std::vector<bool>& drop,
+               const std::unordered_map<std::int64_t, std::size_t>& row_of) {
+    const MappingOptions& opt = builder.options();
+    if (opt.update_twin_max_window_ratio <= 0) return;
+    std::vector<std::size_t> kept;
+    for (const std::size_t k : fresh) {
+        const world::MapObject& n = r.map.objects[k];
+        const int w_new = builder.evidenceOf(n.id).windows_matched;
+        bool twin = false;
+        for (const world::MapObject& o : r.map.objects) {
+            if (!builder.isGivenObject(o.id) || r.map.class_names.at(static_cast<std::size_t>(o.class_id)) !=
+                                                     r.map.class_names.at(static_cast<std::size_t>(n.class_id)))
+                continue;
+            const int w_old = builder.evidenceOf(o.id).windows_matched;
+            // Along a long object (a desk, a sofa) its twins lie up to its length away.
+            const double radius = std::max(opt.update_twin_max_distance_m, std::max(o.box.size.x(), o.box.size.y()));
+            if (w_old > 0 && planarDistance(o.box, n.box) < radius &&
+                w_new < opt.update_twin_max_window_ratio * w_old)
+                twin = true;
+        }
+        if (!twin) {
+            kept.push_back(k);
+            continue;
+        }
+        drop[k] = true;
+        r.evidence[row_of.at(n.id)].decision = "twin";
+    }
+    fresh = std::move(kept);
+}
+
 }  // namespace
 
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder) {
@@ -80,19 +127,38 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     };
     std::vector<Gone> gone;
     const std::vector<double> rate = classMatchRates(m0, builder);
+    std::unordered_map<std::int64_t, std::size_t> row_of;  // id -> its evidence row
     for (const auto& o : m0.objects) {
-        if (!index_in_map.count(o.id)) continue;  // merged into another object of m0: still there
         const SessionEvidence e = builder.evidenceOf(o.id);
         const int expected = e.windows_matched + e.windows_missed;
-        if (expected == 0) ++r.unseen;
         const double p_present = binomialCdf(e.windows_matched, expected, rate[static_cast<std::size_t>(o.class_id)]);
-        if (e.windows_missed >= opt.update_min_missed_windows) {
-            if (e.windows_matched < opt.update_max_seen_fraction * expected)
-                gone.push_back({&o, e, p_present < opt.update_removal_alpha});
-            else if (e.windows_matched < opt.update_reassociate_max_seen_fraction * expected &&
-                     p_present < opt.update_removal_alpha)
-                gone.push_back({&o, e, false});
-        }
+        UpdateEvidence row;
+        row.id = o.id;
+        row.origin = "earlier";
+        row.class_name = m0.class_names.at(static_cast<std::size_t>(o.class_id));
+        row.x_m = o.box.center.x(), row.y_m = o.box.center.y();
+        row.windows_matched = e.windows_matched, row.windows_missed = e.windows_missed;
+        row.windows_missed_behind_new = e.windows_missed_behind_new;
+        row.class_rate = rate[static_cast<std::size_t>(o.class_id)];
+        row.p_present = p_present;
+        row.decision = !index_in_map.count(o.id) ? "merged" : expected == 0 ? "unseen" : "kept";
+        row_of[o.id] = r.evidence.size();
+        r.evidence.push_back(row);
+        if (!index_in_map.count(o.id)) continue;  // merged into another object of m0: still there
+        if (expected == 0) ++r.unseen;
+        const bool removable = e.windows_missed >= opt.update_min_missed_windows &&
+                               e.windows_matched < opt.update_max_seen_fraction * expected &&
+                               p_present < opt.update_removal_alpha;
+        // The windows that expected it only behind a new object of its class (its possible new
+        // place, DisplacedCopies.h) count for a move to such an object, never for a removal.
+        SessionEvidence behind = e;
+        behind.windows_missed += e.windows_missed_behind_new;
+        const int expected_behind = behind.windows_matched + behind.windows_missed;
+        const double p_behind = binomialCdf(e.windows_matched, expected_behind, row.class_rate);
+        if (isGone(e, p_present, opt))
+            gone.push_back({&o, e, removable});
+        else if (e.windows_missed_behind_new > 0 && isGone(behind, p_behind, opt))
+            gone.push_back({&o, behind, false});
     }
 
     // New confirmed objects of this session. The earlier map already explains the scene, so a new
@@ -102,11 +168,33 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     for (std::size_t k = 0; k < r.map.objects.size(); ++k) {
         const std::int64_t id = r.map.objects[k].id;
         if (builder.isGivenObject(id)) continue;
-        if (builder.evidenceOf(id).windows_matched >= opt.update_min_new_windows)
+        const world::MapObject& n = r.map.objects[k];
+        UpdateEvidence row;
+        row.id = id;
+        row.origin = "new";
+        row.class_name = names.at(static_cast<std::size_t>(n.class_id));
+        row.x_m = n.box.center.x(), row.y_m = n.box.center.y();
+        row.windows_matched = builder.evidenceOf(id).windows_matched;
+        row.windows_missed = builder.evidenceOf(id).windows_missed;
+        row.decision = "added";
+        row_of[id] = r.evidence.size();
+        r.evidence.push_back(row);
+        if (builder.evidenceOf(id).windows_matched >= opt.update_min_new_windows) {
             fresh.push_back(k);
-        else
+        } else {
             drop[k] = true;
+            r.evidence.back().decision = "too-few-windows";
+        }
     }
+    dropTwins(builder, r, fresh, drop, row_of);
+    // Nearest object of the other origin and the same class, for the evidence file.
+    for (UpdateEvidence& a : r.evidence)
+        for (const UpdateEvidence& b : r.evidence) {
+            if (a.origin == b.origin || a.class_name != b.class_name) continue;
+            if (a.origin == "earlier" && b.decision == "merged") continue;
+            const double d = std::hypot(a.x_m - b.x_m, a.y_m - b.y_m);
+            if (a.nearest_m < 0 || d < a.nearest_m) a.nearest_id = b.id, a.nearest_m = d, a.nearest_windows = b.windows_matched;
+        }
 
     // Pair gone and new objects of one class, closest first (deterministic: ties by order).
     struct Pair {
@@ -139,6 +227,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         c.class_name = m0.class_names.at(static_cast<std::size_t>(b.class_id));
         c.before = b.box;
         if (partner_of_gone[g] < 0) {
+            r.evidence[row_of.at(b.id)].decision = "removed";
             c.kind = "removed";
             c.confidence = removedConfidence(gone[g].evidence);
             removed.push_back(c);
@@ -147,6 +236,8 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         world::MapObject& n = r.map.objects[fresh[static_cast<std::size_t>(partner_of_gone[g])]];
         const double conf = std::min(removedConfidence(gone[g].evidence), addedConfidence(builder.evidenceOf(n.id)));
         const bool displaced = planarDistance(b.box, n.box) >= opt.update_min_move_m;
+        r.evidence[row_of.at(n.id)].decision = "move-target";
+        r.evidence[row_of.at(b.id)].decision = displaced ? "moved" : "re-estimated";
         n.id = b.id;  // the object keeps its identity across sessions
         if (!displaced) continue;
         c.kind = "moved";

@@ -187,6 +187,13 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .number("update_reassociate_max_seen_fraction", &O::update_reassociate_max_seen_fraction, "", between(0, 1),
                     "an object matched in fewer than this fraction of its windows (missed >= 3, unlikely for its class) is moved to a new "
                     "object of its class within `update_move_max_distance_m`, else kept")
+            .number("update_unhide_max_distance_m", &O::update_unhide_max_distance_m, "m", between(0, 100),
+                    "a new object this close to an object of M0 of its class does not hide it (its possible new place); the "
+                    "windows that expected M0's object only so count for a move, not a removal; 0 = off")
+            .number("update_twin_max_distance_m", &O::update_twin_max_distance_m, "m", between(0, 100),
+                    "a new object this close to an object of M0 of its class that the session matched (or within that object's length) ...")
+            .number("update_twin_max_window_ratio", &O::update_twin_max_window_ratio, "", between(0, 1e6),
+                    "... and matched in fewer than this times its windows is its twin: neither added nor a move's new place; 0 = off")
             .number("room_door_width_m", &O::room_door_width_m, "m", between(0, 100), "segmentation erosion (see \"Rooms\")")
             .number("room_min_area_m2", &O::room_min_area_m2, "m^2", between(0, 1e6), "segmentation: smaller eroded components are not rooms")
             .number("room_search_radius_m", &O::room_search_radius_m, "m", between(0, 100), "room of a point in a wall")

@@ -58,20 +58,25 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_estimates.clear();
     m_windows_matched.clear();
     m_windows_missed.clear();
+    m_windows_missed_behind_new.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_active.clear();
+    m_window_active_behind_new.clear();
     m_window_candidates.clear();
     m_window_start.reset();
     m_window_steps = 0;
     m_last_step.reset();
     m_groups_valid = false;
+    m_unhidden_valid = false;
 }
 
 SessionEvidence ObjectMapBuilder::evidenceOf(std::int64_t id) const {
     SessionEvidence e;
     if (const auto it = m_windows_matched.find(id); it != m_windows_matched.end()) e.windows_matched = it->second;
     if (const auto it = m_windows_missed.find(id); it != m_windows_missed.end()) e.windows_missed = it->second;
+    if (const auto it = m_windows_missed_behind_new.find(id); it != m_windows_missed_behind_new.end())
+        e.windows_missed_behind_new = it->second;
     return e;
 }
 
@@ -197,10 +202,10 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
 
     // I_active of the map objects for this camera, accumulated over the window.
     const camera::PinholeCamera camera = cameraOf(obs, robot_pose);
-    std::vector<bool> active, candidate;
-    visibility(camera, current_room, active, candidate);
+    std::vector<bool> active, candidate, behind_new;
+    visibility(camera, current_room, active, candidate, &behind_new);
     for (std::size_t k = 0; k < m_g.objects.size(); ++k) {
-        if (active[k]) m_window_active.insert(m_g.objects[k].id);
+        if (active[k]) (behind_new[k] ? m_window_active_behind_new : m_window_active).insert(m_g.objects[k].id);
         if (candidate[k]) m_window_candidates.insert(m_g.objects[k].id);
     }
 

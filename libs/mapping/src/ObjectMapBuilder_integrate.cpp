@@ -4,6 +4,7 @@
 #include <simp/geometry/Hungarian.h>
 #include <simp/mapping/AssociationCost.h>
 #include <simp/camera/Occluders.h>
+#include <simp/mapping/DisplacedCopies.h>
 #include <simp/mapping/ObjectMapBuilder.h>
 
 #include <algorithm>
@@ -42,10 +43,11 @@ void ObjectMapBuilder::updateGroups() {
 }
 
 void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int current_room, std::vector<bool>& active,
-                                  std::vector<bool>& candidate) {
+                                  std::vector<bool>& candidate, std::vector<bool>* active_behind_new) {
     const std::size_t n = m_g.objects.size();
     active.assign(n, false);
     candidate.assign(n, false);
+    if (active_behind_new != nullptr) active_behind_new->assign(n, false);
     if (n == 0) return;
     m_boxes_scratch.resize(n);
     m_occludes_scratch.resize(n);
@@ -65,6 +67,16 @@ void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int curre
         if (!m_groups_valid || m_groups.size() != n) updateGroups();
         prm.group = &m_groups;
     }
+    if (m_earlier_session && m_options.update_unhide_max_distance_m > 0) {
+        // A new object of this session may be an earlier object moved a short way: where it stands
+        // between the camera and the old place, it must not hide the old place, or the old object
+        // is never expected there, never missed, and the move is reported as an addition.
+        if (!m_unhidden_valid || m_unhidden_by.size() != n) {
+            m_unhidden_by = displacedCopyCandidates(m_g, m_first_built_id, m_options.update_unhide_max_distance_m);
+            m_unhidden_valid = true;
+        }
+        prm.unhidden_by = &m_unhidden_by;
+    }
     m_renderer.render(camera, m_boxes_scratch, &m_walls, prm, m_views_scratch);
     for (std::size_t k = 0; k < n; ++k) {
         const world::MapObject& o = m_g.objects[k];
@@ -79,6 +91,8 @@ void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int curre
         const bool in_range = f.max_range_m > 0 && v.distance_m >= f.min_range_m && v.distance_m <= f.max_range_m;
         active[k] = in_range && v.truncated_fraction <= m_options.truncation_threshold &&
                     v.occludedFraction() <= m_options.max_occluded_fraction;
+        if (active[k] && active_behind_new != nullptr && v.occludedFractionByAll() > m_options.max_occluded_fraction)
+            (*active_behind_new)[k] = true;
     }
 }
 
@@ -153,6 +167,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
         m_windows_missed[k.id] += m_windows_missed[d.id];
+        m_windows_missed_behind_new[k.id] += m_windows_missed_behind_new[d.id];
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -208,6 +223,7 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_estimates.erase(id);
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
+    m_windows_missed_behind_new.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -227,6 +243,7 @@ void ObjectMapBuilder::flush() {
     m_window_steps = 0;
     if (m_local.empty() && m_window_active.empty()) {
         m_window_candidates.clear();
+        m_window_active_behind_new.clear();
         return;
     }
     ++m_stats.integrations;
@@ -297,6 +314,10 @@ void ObjectMapBuilder::flush() {
                 ++m_g.objects[it->second].n_skip;
                 ++m_windows_missed[id];
             }
+    // Expected only behind a possible displaced copy of itself: evidence of a move, not of a
+    // removal (MapUpdate.h), and no n_skip (the new object may be a twin in front of it).
+    for (const std::int64_t id : m_window_active_behind_new)
+        if (!matched.count(id) && !m_window_active.count(id) && index_of.count(id)) ++m_windows_missed_behind_new[id];
 
     // Purge when n_match / n_skip < tau_purge. When updating an earlier map, its objects stay:
     // the update rule decides at the end on this session's evidence (MapUpdate.h); the purge
@@ -332,8 +353,10 @@ void ObjectMapBuilder::flush() {
 
     m_local.clear();
     m_window_active.clear();
+    m_window_active_behind_new.clear();
     m_window_candidates.clear();
     m_groups_valid = false;
+    m_unhidden_valid = false;
 }
 
 }  // namespace simp::mapping

@@ -20,11 +20,16 @@ struct BoxView {
     int covered_px = 0;             ///< z-buffer pixels the box covers inside the image (any depth)
     int visible_px = 0;             ///< of those, pixels where it is the front-most surface and not behind a wall
     int unwalled_px = 0;            ///< covered pixels not behind a wall (other boxes ignored)
+    int unhidden_px = 0;            ///< of visible_px, pixels counted only because the front-most box does not hide it (ZBufferParams::unhidden_by)
     double truncated_fraction = 1;  ///< fraction of its projected 2D bounding box outside the image, [0, 1]
     double distance_m = 0;          ///< camera centre -> box centre (m)
 
     /// Fraction of the covered pixels hidden by other boxes or walls, [0, 1] (1 when not covered).
     double occludedFraction() const { return covered_px > 0 ? 1.0 - double(visible_px) / covered_px : 1.0; }
+    /// The same when the boxes of ZBufferParams::unhidden_by hid it too.
+    double occludedFractionByAll() const {
+        return covered_px > 0 ? 1.0 - double(visible_px - unhidden_px) / covered_px : 1.0;
+    }
 };
 
 struct ZBufferParams {
@@ -40,6 +45,11 @@ struct ZBufferParams {
     /// Optional, one entry per box: 0 = the box is seen but hides nothing (a door, Occluders.h);
     /// such boxes are rendered a second time against the final z-buffer.
     const std::vector<char>* occludes = nullptr;
+    /// Optional, one entry per box: the boxes (indices, sorted) that do not hide it, where it is
+    /// not behind a wall (BoxView::visible_px counts a pixel where one of them is front-most). A
+    /// one-way relation, unlike `group`: used by a map update for the new objects that may be an
+    /// earlier object's displaced copy (simp::mapping::displacedCopyCandidates).
+    const std::vector<std::vector<int>>* unhidden_by = nullptr;
 };
 
 /// Renders boxes into a reduced-resolution z-buffer. Reuses its buffers across calls
@@ -57,6 +67,7 @@ class ZBufferRenderer {
     int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility against the final z-buffer
     const std::vector<int>* m_group = nullptr;
     const std::vector<char>* m_occludes = nullptr;
+    const std::vector<std::vector<int>>* m_unhidden_by = nullptr;
     std::vector<int> m_stamp_visible;   ///< last box counted visible at a pixel (pass 1)
 
     int m_w = 0, m_h = 0;

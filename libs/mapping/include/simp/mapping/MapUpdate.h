@@ -20,6 +20,12 @@
 ///    (detections of its new place or of a neighbour, along a wall, still reach it). It keeps its
 ///    m0 id. A pair closer
 ///    than update_min_move_m is the object re-estimated: no change, the new box replaces it;
+///    The windows in which the object was expected only because a new object of its class within
+///    update_unhide_max_distance_m (its possible new place) did not hide it (DisplacedCopies.h,
+///    SessionEvidence::windows_missed_behind_new) count as misses for a move, never for a removal;
+///  - twins: a new object within update_twin_max_distance_m (or the m0 object's length) of an m0
+///    object of its class that this session matched, matched in fewer than
+///    update_twin_max_window_ratio times its windows, is its twin: neither added nor a new place;
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few
@@ -28,6 +34,7 @@
 /// Objects of m0 the session never expected to see stay as they were.
 
 #include <simp/mapping/ObjectMapBuilder.h>
+#include <simp/mapping/UpdateEvidence.h>
 #include <simp/world/ChangesFile.h>
 #include <simp/world/ObjectMapData.h>
 
@@ -39,6 +46,9 @@ struct MapUpdateResult {
     world::ObjectMapData map;                 ///< the updated map (builder's confirmed map minus removed objects)
     std::vector<world::ChangeRecord> changes; ///< removed, moved, added, each with a confidence
     std::size_t unseen = 0;                   ///< objects of m0 this session never expected to see (kept)
+    /// Per object of m0 (its order), then per new object of the builder's confirmed map: the
+    /// evidence and the decision (M/update_evidence.tsv).
+    std::vector<UpdateEvidence> evidence;
 };
 
 /// The changes between `m0` (the map given to the builder's setMap) and what the builder made of it.

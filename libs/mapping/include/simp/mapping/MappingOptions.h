@@ -170,6 +170,18 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// class stands within update_move_max_distance_m: detections of its new place, or of a
     /// neighbour, still reach the old object (moves along a wall, a row of cabinets).
     double update_reassociate_max_seen_fraction = 0.3;
+    /// A new object of the session closer than this to an object of the earlier map of its class
+    /// does not hide it in I_active (it may be its new place: a short move whose new place stands
+    /// between the camera and the old one, DisplacedCopies.h); the windows that expected the old
+    /// object only so count for a move, never for a removal. 0 = off.
+    double update_unhide_max_distance_m = 1.0;
+    /// A new object within update_twin_max_distance_m (or the longer horizontal side of the
+    /// object's box, if longer: along a desk or a sofa) of an object of the earlier map of its class
+    /// that this session matched, and matched in fewer than update_twin_max_window_ratio times as
+    /// many windows as it, is that object's twin (the detector's error from some viewpoints), not
+    /// an addition: a real object next to it is seen from about as many viewpoints. 0 = off.
+    double update_twin_max_distance_m = 1.0;
+    double update_twin_max_window_ratio = 0.5;
     /// @}
 
     /// @name Detection filter

@@ -46,6 +46,10 @@ struct BuilderStats {
 struct SessionEvidence {
     int windows_matched = 0;
     int windows_missed = 0;
+    /// Updating an earlier map: windows in which it was unmatched and expected only because the
+    /// new objects that may be its displaced copy (DisplacedCopies.h) were taken not to hide it.
+    /// Evidence of a move to one of them, not of a removal (the new object may be a twin in front).
+    int windows_missed_behind_new = 0;
 };
 
 /// One object of the short-term local map m^_g.
@@ -115,8 +119,10 @@ class ObjectMapBuilder {
     /// when active (I_active = 1: in the frustum and range, not truncated, not occluded, in the
     /// current room) and true when an association candidate (in the current room, some projected
     /// pixel in the image and not behind a wall; other boxes may hide it).
+    /// Updating an earlier map, `active_behind_new` (optional) marks the objects active only
+    /// because their possible displaced copies (DisplacedCopies.h) do not hide them.
     void visibility(const camera::PinholeCamera& camera, int current_room, std::vector<bool>& active,
-                    std::vector<bool>& candidate);
+                    std::vector<bool>& candidate, std::vector<bool>* active_behind_new = nullptr);
 
    private:
     int mapClassOf(const std::string& name);
@@ -147,6 +153,7 @@ class ObjectMapBuilder {
     world::ObjectMapData m_g;       ///< the global object map m_g
     std::vector<LocalObject> m_local;  ///< the local map m^_g
     std::set<std::int64_t> m_window_active;     ///< map ids active in some frame of the window
+    std::set<std::int64_t> m_window_active_behind_new;  ///< of those, ids never active but behind a possible displaced copy
     std::set<std::int64_t> m_window_candidates; ///< map ids visible in some frame of the window
     std::optional<mrpt::poses::CPose3D> m_window_start;  ///< robot pose when m^_g was started
     int m_window_room = 0;  ///< the robot's room in the window's last frame (0 = unknown / policy all)
@@ -161,6 +168,7 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
+    std::unordered_map<std::int64_t, int> m_windows_missed_behind_new;  ///< SessionEvidence::windows_missed_behind_new
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
@@ -179,6 +187,10 @@ class ObjectMapBuilder {
     std::vector<int> m_groups;
     bool m_groups_valid = false;
     void updateGroups();
+    /// Updating an earlier map: per map object, the new objects that do not hide it (its possible
+    /// displaced copies, DisplacedCopies.h); recomputed after the map changed.
+    std::vector<std::vector<int>> m_unhidden_by;
+    bool m_unhidden_valid = false;
     BuilderStats m_stats;
 };
 
