@@ -83,9 +83,7 @@ void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
         const int w_new = builder.evidenceOf(n.id).windows_matched;
         bool twin = false;
         for (const world::MapObject& o : r.map.objects) {
-            if (!builder.isGivenObject(o.id) || r.map.class_names.at(static_cast<std::size_t>(o.class_id)) !=
-                                                     r.map.class_names.at(static_cast<std::size_t>(n.class_id)))
-                continue;
+            if (!builder.isGivenObject(o.id) || o.class_id != n.class_id) continue;  // one class table: r.map's
             const int w_old = builder.evidenceOf(o.id).windows_matched;
             // Along a long object (a desk, a sofa) its twins lie up to its length away.
             const double radius = std::max(opt.update_twin_max_distance_m, std::max(o.box.size.x(), o.box.size.y()));
@@ -169,17 +167,18 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const std::int64_t id = r.map.objects[k].id;
         if (builder.isGivenObject(id)) continue;
         const world::MapObject& n = r.map.objects[k];
+        const SessionEvidence e = builder.evidenceOf(id);
         UpdateEvidence row;
         row.id = id;
         row.origin = "new";
         row.class_name = names.at(static_cast<std::size_t>(n.class_id));
         row.x_m = n.box.center.x(), row.y_m = n.box.center.y();
-        row.windows_matched = builder.evidenceOf(id).windows_matched;
-        row.windows_missed = builder.evidenceOf(id).windows_missed;
+        row.windows_matched = e.windows_matched;
+        row.windows_missed = e.windows_missed;
         row.decision = "added";
         row_of[id] = r.evidence.size();
         r.evidence.push_back(row);
-        if (builder.evidenceOf(id).windows_matched >= opt.update_min_new_windows) {
+        if (e.windows_matched >= opt.update_min_new_windows) {
             fresh.push_back(k);
         } else {
             drop[k] = true;

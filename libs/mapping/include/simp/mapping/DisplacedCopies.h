@@ -14,7 +14,7 @@ namespace simp::mapping {
 
 /// Per object of `map` (same order): for an earlier object (id < first_new_id), the indices
 /// (sorted) of the new objects (id >= first_new_id) of its class whose planar centre lies within
-/// `max_distance_m` of its own (update_move_max_distance_m: the place it may have moved to);
+/// `max_distance_m` of its own (update_unhide_max_distance_m: the place it may have moved to);
 /// empty for the new objects. The `unhidden_by` relation of camera::ZBufferParams.
 std::vector<std::vector<int>> displacedCopyCandidates(const world::ObjectMapData& map, std::int64_t first_new_id,
                                                       double max_distance_m);
