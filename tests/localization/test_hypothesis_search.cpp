@@ -9,6 +9,7 @@
 #include <simp/localization/HypothesisSearch.h>
 
 #include <cmath>
+#include <limits>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -122,4 +123,54 @@ TEST(StateMonitor, RivalPlacesBlockLocalizedAndMakeItLost) {
     FitWindow::Fit beaten = good;
     beaten.rival_advantage = p.rival_lost_margin + 0.1;
     EXPECT_EQ(m.update(0.95, 0.1, beaten, true), LocalizationState::Lost);
+}
+
+TEST(HypothesisSearch, ClimbFromABiasedPoseReachesTheTruePlace) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    const FreeSpace free_space(w.floorplan, 0.7);
+    const DetectionPoseSampler sampler(*map, free_space);
+    const HypothesisSearch search(*map, sampler, on());
+    const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
+    // A set sitting 0.45 m and 0.12 rad beside the truth: a neighbouring mode, not a distinct place.
+    mrpt::math::TPose2D biased = wk.robot_now;
+    biased.x += 0.35;
+    biased.y -= 0.28;
+    biased.phi = mrpt::math::wrapToPi(biased.phi + 0.12);
+    ASSERT_FALSE(search.distinct(biased, wk.robot_now));
+    double own = 0;
+    const Hypothesis best = search.climb(wk.window, biased, wk.odometry_now, own);
+    // exact detections: the climb ends within its last grid step (0.05 m, 0.025 rad) of the truth
+    EXPECT_LT(translationError(best.pose, wk.robot_now), 0.1);
+    EXPECT_LT(headingError(best.pose, wk.robot_now), 0.05);
+    EXPECT_GT(best.log_likelihood - own, 7.0);  // clearly better: the shipped [State] local_margin
+    // At the truth there is nothing to gain.
+    double own_truth = 0;
+    const Hypothesis stay = search.climb(wk.window, wk.robot_now, wk.odometry_now, own_truth);
+    EXPECT_LT(stay.log_likelihood - own_truth, 1.0);
+    EXPECT_LT(translationError(stay.pose, wk.robot_now), 0.1);
+}
+
+TEST(StateMonitor, ABetterPoseNearbyBlocksLocalizedAndEndsIt) {
+    StateParams p;
+    p.local_margin = 7.0;
+    StateMonitor m(p);
+    FitWindow::Fit good{0.9, 10, 1.0, 4};
+    good.local_gain = 0.5 * p.local_margin;
+    FitWindow::Fit biased = good;
+    biased.local_gain = p.local_margin + 0.5;
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m.update(0.95, 0.1, biased, true), LocalizationState::Global);
+    for (std::size_t i = 0; i < p.localized_min_updates; ++i) m.update(0.95, 0.1, good, true);
+    EXPECT_EQ(m.state(), LocalizationState::Localized);
+    FitWindow::Fit unknown = good;
+    unknown.local_gain = std::numeric_limits<double>::quiet_NaN();  // not computed: no change
+    EXPECT_EQ(m.update(0.95, 0.1, unknown, true), LocalizationState::Localized);
+    // back to searching, not lost: the set is beside the right place, not somewhere else
+    EXPECT_EQ(m.update(0.95, 0.1, biased, true), LocalizationState::Global);
+    // off: the same fit changes nothing
+    StateParams off = p;
+    off.local_margin = 0;
+    StateMonitor m_off(off);
+    for (std::size_t i = 0; i < off.localized_min_updates; ++i) m_off.update(0.95, 0.1, biased, true);
+    EXPECT_EQ(m_off.state(), LocalizationState::Localized);
 }

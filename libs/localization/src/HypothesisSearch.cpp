@@ -76,6 +76,31 @@ void HypothesisSearch::refine(const FitWindow& window, const mrpt::poses::CPose2
     }
 }
 
+Hypothesis HypothesisSearch::climb(const FitWindow& window, const mrpt::math::TPose2D& pose,
+                                   const mrpt::poses::CPose2D& odometry_now, double& own, int moves) const {
+    std::vector<double> g;
+    window.scorePoses(m_map, {pose}, odometry_now, g);
+    own = g.front();
+    Hypothesis h{pose, own};
+    double step_m = m_params.refine_step_m, step_rad = m_params.refine_step_rad;
+    std::vector<mrpt::math::TPose2D> grid;
+    for (int level = 0; level < 3; ++level, step_m /= 2, step_rad /= 2)
+        for (int move = 0; move < moves; ++move) {
+            grid.clear();
+            for (int a = -1; a <= 1; ++a)
+                for (int b = -1; b <= 1; ++b)
+                    for (int c = -1; c <= 1; ++c)
+                        if (a != 0 || b != 0 || c != 0)
+                            grid.push_back({h.pose.x + a * step_m, h.pose.y + b * step_m,
+                                            mrpt::math::wrapToPi(h.pose.phi + c * step_rad)});
+            window.scorePoses(m_map, grid, odometry_now, g);
+            const std::size_t best = bestFirst(g).front();
+            if (!(g[best] > h.log_likelihood)) break;
+            h = {grid[best], g[best]};
+        }
+    return h;
+}
+
 double HypothesisSearch::rivalAdvantage(const FitWindow& window, const std::vector<Hypothesis>& hypotheses,
                                         const mrpt::math::TPose2D& pose, const mrpt::poses::CPose2D& odometry_now) const {
     double best_rival = -std::numeric_limits<double>::infinity();

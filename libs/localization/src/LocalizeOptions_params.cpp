@@ -30,6 +30,7 @@ const io::OptionTable<StateParams>& stateParamsTable() {
             .number("rival_margin", &O::rival_margin, "nats", kNonNegative, "localized needs the estimate to beat every distinct pose by this")
             .number("rival_lost_margin", &O::rival_lost_margin, "nats", ValueRange::positive(), "... or a distinct pose explains the window better by this")
             .number("object_radius_m", &O::object_radius_m, "m", kNonNegative, "> 0: the window counts objects of this radius, not detections")
+            .number("local_margin", &O::local_margin, "nats", kNonNegative, "> 0: a pose near the estimate that explains the window better by this: not localized, resetting about it; 0 = off")
             .rule("fit_min_detections", [](const O& o) { return o.fit_min_detections <= o.fit_window; }, "be <= fit_window")
             .rule("lost_window", [](const O& o) { return o.lost_window <= o.fit_window; }, "be <= fit_window")
             .rule("lost_max_fit", [](const O& o) { return o.lost_max_fit < o.localized_min_fit; }, "be smaller than localized_min_fit");
@@ -55,6 +56,9 @@ const io::OptionTable<SensorResettingParams>& resettingParamsTable() {
             .number("global_fraction", &O::global_fraction, "", kFraction, "particles replaced per update while searching")
             .number("lost_fraction", &O::lost_fraction, "", kFraction, "... while lost")
             .number("localized_fraction", &O::localized_fraction, "", kFraction, "... while localized")
+            .number("local_fraction", &O::local_fraction, "", kFraction, "... drawn about a better pose near the estimate ([State] local_margin)")
+            .number("local_position_std_m", &O::local_position_std_m, "m", kNonNegative, "... with this position spread")
+            .number("local_heading_std_rad", &O::local_heading_std_rad, "rad", kNonNegative, "... and heading spread")
             .number("uniform_share", &O::uniform_share, "", kFraction, "of the injected particles, this share uniform over free space")
             .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", kNonNegative,
                     "spread of a drawn position about the exact fit")

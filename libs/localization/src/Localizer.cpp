@@ -248,6 +248,21 @@ std::size_t Localizer::injectFromDetections(ObjectMcl& mcl, LocalizationState st
     return mcl.inject(poses);
 }
 
+void Localizer::injectAboutLocalTarget(ObjectMcl& mcl, const mrpt::poses::CPose2D* motion) {
+    if (!m_local_target) return;
+    // The target is the robot pose at the last update: moved by the odometry applied since.
+    const mrpt::math::TPose2D target = motion ? (mrpt::poses::CPose2D(*m_local_target) + *motion).asTPose() : *m_local_target;
+    m_local_target.reset();
+    const auto& r = m_opts.resetting;
+    const auto count = static_cast<std::size_t>(std::lround(r.local_fraction * static_cast<double>(mcl.size())));
+    if (count == 0) return;
+    DetectionPoseSamplerParams spread = r.sampler;
+    spread.position_std_m = r.local_position_std_m;
+    spread.heading_std_rad = r.local_heading_std_rad;
+    const auto poses = drawAbout({Hypothesis{target, 0}}, count, spread, *m_free);
+    if (!poses.empty()) mcl.inject(poses);
+}
+
 void Localizer::searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations) {
     m_hypotheses.clear();
     m_reset_targets.clear();
@@ -302,6 +317,7 @@ void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::pose
         // particle count chosen at resampling.
         mcl.predict(acts ? &*acts : nullptr, pf);
         injectFromDetections(mcl, state, observations);
+        if (&mcl == m_mcl.get()) injectAboutLocalTarget(mcl, motion);
         mcl.weigh(observations, pf.powFactor);
         if (m_scan_model && m_pending_scan) {
             mcl.weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
@@ -368,6 +384,13 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
     if (trigger && !m_hypotheses.empty())
         fit.rival_advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, now.asTPose(), m_odometry);
+    if (trigger && m_monitor.state() != LocalizationState::Lost && m_fit.size() >= m_opts.state.fit_min_detections) {
+        double own = 0;
+        const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
+        fit.local_gain = best.log_likelihood - own;
+        fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
+        if (m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
+    }
     if (trigger) {
         const auto before = m_monitor.state();
         const ParticleSummary& s = *m_summary;
@@ -393,6 +416,8 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     rec.fit = fit.fraction;
     rec.fit_detections = fit.scored;
     rec.rival_advantage = fit.rival_advantage;
+    rec.local_gain = fit.local_gain;
+    rec.local_offset_m = fit.local_offset_m;
     rec.challenger_particles = m_challenger ? m_challenger->mcl->size() : 0;
     rec.state = m_monitor.state();
     return rec;

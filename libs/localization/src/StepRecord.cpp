@@ -10,7 +10,7 @@ namespace simp::localization {
 std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
            "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
-           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles";
+           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles,local_gain_nats,local_offset_m";
 }
 
 std::string stepsCsvLine(const StepRecord& s) {
@@ -32,7 +32,16 @@ std::string stepsCsvLine(const StepRecord& s) {
     } else {
         out += ",";
     }
-    out += "," + std::to_string(s.challenger_particles) + "\n";
+    out += "," + std::to_string(s.challenger_particles);
+    for (const double v : {s.local_gain, s.local_offset_m}) {
+        if (std::isfinite(v)) {
+            std::snprintf(line, sizeof(line), ",%.3f", v);
+            out += line;
+        } else {
+            out += ",";
+        }
+    }
+    out += "\n";
     return out;
 }
 

@@ -54,6 +54,14 @@ class HypothesisSearch {
     double rivalAdvantage(const FitWindow& window, const std::vector<Hypothesis>& hypotheses,
                           const mrpt::math::TPose2D& pose, const mrpt::poses::CPose2D& odometry_now) const;
 
+    /// Hill climb of the window's log-likelihood from `pose` (3 x 3 x 3 grids of refine_step_m /
+    /// refine_step_rad, at most `moves` moves per level, the step halved twice): a pose a few
+    /// decimetres away that explains the window clearly better says the estimate is biased (the set
+    /// sits on a neighbouring mode that the rival test, for distinct places only, cannot see).
+    /// Returns the best pose found and its log-likelihood; `own` gets the log-likelihood at `pose`.
+    Hypothesis climb(const FitWindow& window, const mrpt::math::TPose2D& pose, const mrpt::poses::CPose2D& odometry_now,
+                     double& own, int moves = 6) const;
+
     bool distinct(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const;
     const HypothesisSearchParams& params() const { return m_params; }
 

@@ -49,6 +49,11 @@ struct StateParams {
     /// A moved object seen ten times is then one unexplained object, not ten (a false `lost`), and a
     /// biased object seen ten times is one vote in the fit. 0: every detection counts (the first round).
     double object_radius_m = 0.0;
+    /// > 0: a pose near the estimate (HypothesisSearch::climb) that explains the window better by this
+    /// (nats) means the set sits beside the right place: not localized (a localized set returns to
+    /// `global`), and [SensorResetting] local_fraction of the particles are drawn about that pose.
+    /// 0: off.
+    double local_margin = 0.0;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.
@@ -67,6 +72,10 @@ class FitWindow {
         /// Window log-likelihood of the best distinct pose minus the estimate's (nats); NaN when
         /// no rival was searched at this update.
         double rival_advantage = std::numeric_limits<double>::quiet_NaN();
+        /// Window log-likelihood of the best pose near the estimate (HypothesisSearch::climb) minus
+        /// the estimate's (nats), and how far that pose is (m); NaN when not computed.
+        double local_gain = std::numeric_limits<double>::quiet_NaN();
+        double local_offset_m = std::numeric_limits<double>::quiet_NaN();
     };
     /// Scores the window with the robot at `estimate` (world) now, at odometry pose `odometry_now`:
     /// each detection at estimate (+) (odometry_now^-1 (+) its odometry pose).
@@ -105,6 +114,9 @@ class StateMonitor {
     LocalizationState state() const { return m_state; }
 
    private:
+    bool locallyBiased(const FitWindow::Fit& fit) const {
+        return m_params.local_margin > 0 && fit.local_gain >= m_params.local_margin;  // false for NaN
+    }
     StateParams m_params;
     LocalizationState m_state = LocalizationState::Global;
     std::size_t m_good_updates = 0;

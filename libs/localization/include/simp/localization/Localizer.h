@@ -33,6 +33,9 @@ struct SensorResettingParams {
     double global_fraction = 0.02;    ///< while searching
     double lost_fraction = 0.0;       ///< while lost (0: the challenger searches, the set keeps its track)
     double localized_fraction = 0.0;  ///< while localized
+    double local_fraction = 0.0;      ///< drawn about a better pose near the estimate ([State] local_margin) ...
+    double local_position_std_m = 0.1;     ///< ... with this spread (m): the climb's resolution, not a fit's noise
+    double local_heading_std_rad = 0.05;   ///< ... and this (rad)
     double uniform_share = 0.2;       ///< of the injected particles, this share uniform over free space
     DetectionPoseSamplerParams sampler;
 };
@@ -137,6 +140,7 @@ class Localizer {
     /// [Challenger] hypothesis_search: the places its resetting draws about at this update.
     void seedChallenger(const std::vector<WeightedObservation>& observations);
     /// Runs the hypothesis search when due (m_hypotheses is empty otherwise).
+    void injectAboutLocalTarget(ObjectMcl& mcl, const mrpt::poses::CPose2D* motion);
     void searchHypotheses(double t_s, const std::vector<WeightedObservation>& observations);
     std::size_t particleTarget(const ObjectMcl& mcl, LocalizationState state) const;
 
@@ -164,6 +168,9 @@ class Localizer {
     std::vector<Hypothesis> m_hypotheses;  ///< of the current update (empty: not searched)
     std::vector<Hypothesis> m_reset_targets;  ///< those worth particles (about as good as the estimate or better)
     double m_last_search_s = -std::numeric_limits<double>::infinity();
+    /// A pose near the estimate that explains the fit window better by [State] local_margin, as of
+    /// the last update (the next one draws [SensorResetting] local_fraction of the set about it).
+    std::optional<mrpt::math::TPose2D> m_local_target;
     FitWindow m_fit;
     StateMonitor m_monitor;
     SkippedDetections m_skipped;

@@ -32,6 +32,10 @@ struct StepRecord {
     /// Window log-likelihood of the best distinct place minus the estimate's (nats; HypothesisSearch);
     /// NaN when not searched at this frame (written empty).
     double rival_advantage = std::numeric_limits<double>::quiet_NaN();
+    /// Window log-likelihood of the best pose near the estimate minus the estimate's (nats) and its
+    /// distance (m) (HypothesisSearch::climb); NaN when not computed (written empty).
+    double local_gain = std::numeric_limits<double>::quiet_NaN();
+    double local_offset_m = std::numeric_limits<double>::quiet_NaN();
     std::size_t challenger_particles = 0;  ///< particles of the challenger searching while `lost` (0: none)
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
