@@ -11,7 +11,7 @@
 #include <simp/localization/LocalizeApp.h>
 #include <simp/mapping/MapApp.h>
 #include <simp/mapping/MappingOptions.h>
-#include <simp/maps/SensorModelTypes.h>
+#include <simp/model/LocalizationMethods.h>
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/Trajectory.h>
@@ -63,6 +63,13 @@ std::string projectFile(const std::string& relative) {
     return fs::exists(path) ? path : std::string();
 }
 
+/// "simp|edt|d|o": the methods the demo runs, the object models alone.
+std::string objectModelChoices() {
+    std::string s;
+    for (const auto& m : model::sensorModelTypeNames()) s += (s.empty() ? "" : "|") + m;
+    return s;
+}
+
 }  // namespace
 
 std::string DemoOptions::defaultLocalizationConfig() { return projectFile("config_ini/simp.ini"); }
@@ -80,7 +87,7 @@ io::CommandLine DemoApp::commandLine() {
         .option("seed", "S", "random seed of the world and the sequences")
         .option("rooms", "N", "rooms of the built-in office, in [2, 2000]")
         .option("particles", "N", "particle count, in [10, 500000]")
-        .option("method", "simp|edt|d|o", "sensor model")
+        .option("method", objectModelChoices(), "sensor model")
         .option("runs", "N", "localization runs with 0 %, 15 %, 30 %, ... changes, in [1, 10]")
         .option("mapping-duration", "SEC", "duration of the mapping run")
         .unit("s")
@@ -103,8 +110,8 @@ bool DemoApp::initialize(const std::vector<std::string>& args, std::ostream& out
     if (auto v = c.integer("particles", 10, kMaxParticles)) options.particles = static_cast<int>(*v);
     if (c.has("method")) {
         options.method = c.value("method");
-        // the object models only (the demo's sequences carry no scans): maps::sensorModelTypeNames()
-        const auto& models = maps::sensorModelTypeNames();
+        // the object models only (the demo's sequences carry no scans)
+        const auto& models = model::sensorModelTypeNames();
         if (std::find(models.begin(), models.end(), options.method) == models.end())
             throw std::invalid_argument("option --method: '" + options.method + "' is not " + io::option_text::choices(models));
     }

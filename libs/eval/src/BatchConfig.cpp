@@ -31,11 +31,6 @@ std::vector<std::string> splitListKeepingSpaces(const std::string& s) {
     return out;
 }
 
-/// Every method a batch runs with its paper label, once.
-constexpr std::pair<const char*, const char*> kMethods[] = {{"simp", "Ours"},        {"edt", "EDT-MCL"},
-                                                           {"d", "D-MCL"},          {"o", "O-MCL"},
-                                                           {"lidar", "LiDAR-MCL"}, {"simp+lidar", "Ours+LiDAR"}};
-
 using io::ValueRange;
 
 std::string joined(const std::vector<std::string>& v, const char* sep = " ") {
@@ -65,19 +60,9 @@ void listKey(io::OptionTable<T>& t, const std::string& key, Field field, const s
 
 }  // namespace
 
-const std::vector<std::string>& batchMethodNames() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> n;
-        for (const auto& [name, label] : kMethods) n.emplace_back(name);
-        return n;
-    }();
-    return names;
-}
-
 std::string methodLabel(const std::string& method) {
-    for (const auto& [name, label] : kMethods)
-        if (method == name) return label;
-    return method;
+    const model::LocalizationMethod* m = model::findLocalizationMethod(method);
+    return m ? m->label : method;
 }
 
 std::string rowLabel(const std::string& method, const std::string& variant) {
@@ -103,13 +88,13 @@ const io::OptionTable<BatchConfig>& BatchConfig::table() {
             });
         listKey(t, "sequence_names", &O::sequence_names, "column labels, one per sequence (must be unique); default: directory names");
         t.custom(
-            "methods", "", "a list of " + io::option_text::choices(batchMethodNames()),
+            "methods", "", "a list of " + io::option_text::choices(model::localizationMethodNames()),
             "`simp-localize --method` values (`lidar`, `simp+lidar` need sequences with scans, doc/lidar.md)",
             [](O& o, const std::string& text, const std::string& at) {
                 if (const auto v = splitList(text); !v.empty()) o.methods = v;
                 for (const auto& m : o.methods)
-                    if (std::find(batchMethodNames().begin(), batchMethodNames().end(), m) == batchMethodNames().end())
-                        throw std::invalid_argument(at + ": unknown method '" + m + "' (known: " + joined(batchMethodNames()) + ")");
+                    if (!model::findLocalizationMethod(m))
+                        throw std::invalid_argument(at + ": unknown method '" + m + "' (known: " + joined(model::localizationMethodNames()) + ")");
             },
             [](const O& o, int) { return joined(o.methods); });
         t.integer("repetitions", &O::repetitions, ValueRange::between(1, 1000), "runs per sequence, config and method")

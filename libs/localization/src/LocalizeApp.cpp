@@ -12,6 +12,7 @@
 #include <simp/io/CommandLine.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/maps/CObjectMap.h>
+#include <simp/model/LocalizationMethods.h>
 #include <simp/world/World.h>
 
 #include <chrono>
@@ -30,9 +31,9 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-/// sensorModelNames() joined: "simp|edt|..." (sep "|") or "simp, edt, ... or simp+lidar" (sep ", ").
+/// The method names joined: "simp|edt|..." (sep "|") or "simp, edt, ... or simp+lidar" (sep ", ").
 std::string joinedNames(const std::string& sep) {
-    const auto& n = sensorModelNames();
+    const auto& n = model::localizationMethodNames();
     std::string s;
     for (std::size_t k = 0; k < n.size(); ++k) s += (k == 0 ? "" : sep == ", " && k + 1 == n.size() ? " or " : sep) + n[k];
     return s;
@@ -141,7 +142,7 @@ void LocalizeApp::initialize(int argc, const char* const* argv) {
     loadConfig();
     if (a.has("method")) {
         const std::string m = a.value("method");
-        if (std::find(sensorModelNames().begin(), sensorModelNames().end(), m) == sensorModelNames().end())
+        if (!model::findLocalizationMethod(m))
             throw std::invalid_argument("simp-localize: unknown --method '" + m + "' (use " + joinedNames(", ") + ")");
         options.experiment.sensor_model = m;
     }
@@ -199,12 +200,15 @@ void LocalizeApp::run() {
     std::shared_ptr<maps::CObjectMap> map = m_object_map;
     m_object_map.reset();
     if (!map) map = params ? makeObjectMap(*params, config_path) : std::make_shared<maps::CObjectMap>();
-    // lidar / simp+lidar (doc/lidar.md): the object model, when used, is the paper's (simp)
+    // The method of --method or [LocalizationExperiment] (checked there); none: the map's object model.
     const std::string& model_name = experiment.sensor_model;
-    const bool with_scans = model_name == "lidar" || model_name == "simp+lidar";
-    if (!model_name.empty())
-        map->likelihoodOptions.sensor_model = maps::parseSensorModelType(with_scans ? "simp" : model_name);
-    sensor_model_used = with_scans ? model_name : maps::toString(map->likelihoodOptions.sensor_model);
+    const model::LocalizationMethod* method = model::findLocalizationMethod(model_name);
+    if (!model_name.empty() && !method) throw std::invalid_argument("simp-localize: unknown method '" + model_name + "'");
+    const bool with_scans = method && method->uses_scans;
+    const bool with_objects = !method || method->object_model;
+    // A method without objects (lidar) leaves the map's model: it weighs no detection.
+    if (method && method->object_model) map->likelihoodOptions.sensor_model = *method->object_model;
+    sensor_model_used = method ? method->name : model::toString(map->likelihoodOptions.sensor_model);
     if (with_scans) {
         std::size_t scans = 0;
         for (const auto& fr : seq.frames) scans += lastScan(*fr.observations) ? 1 : 0;
@@ -225,11 +229,10 @@ void LocalizeApp::run() {
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(experiment.seed);
     Localizer localizer(map, world.floorplan, options);
     if (with_scans) {
-        const bool fused = model_name == "simp+lidar";
-        const bool objects_in_scan = fused && options.lidar.map_objects;
+        const bool objects_in_scan = with_objects && options.lidar.map_objects;
         localizer.setScanModel(
             std::make_shared<ScanLikelihood>(world.floorplan, options.lidar, objects_in_scan ? &world.objects : nullptr),
-            fused);
+            with_objects);
     }
     if (initial_pose) {
         const auto& p = *initial_pose;
@@ -259,7 +262,7 @@ void LocalizeApp::run() {
     steps.clear();
     estimate.clear();
     // The localized/lost state is decided on object detections; without them (lidar) every frame is reported.
-    bool reporting = experiment.report_from == ReportFrom::Start || model_name == "lidar";
+    bool reporting = experiment.report_from == ReportFrom::Start || !with_objects;
     const auto t_start = Clock::now();
     auto t_last_progress = t_start;
     const bool tty = isatty(fileno(stderr)) != 0;  // \r-updated line on a terminal, lines otherwise

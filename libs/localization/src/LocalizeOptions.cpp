@@ -1,6 +1,6 @@
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/Localizer.h>
-#include <simp/maps/SensorModelTypes.h>
+#include <simp/model/LocalizationMethods.h>
 
 namespace simp::localization {
 namespace {
@@ -13,26 +13,14 @@ const ValueRange kNonNegative = ValueRange::atLeast(0);
 const ValueRange kFraction = ValueRange::between(0, 1);
 const ValueRange kCount = ValueRange::between(1, 1e6);
 
-/// The sensor models of the localizer beyond the object models of maps::SensorModelType: the scans
-/// against the floor plan alone, and times the object model (ScanLikelihood, doc/lidar.md).
-const std::vector<std::string> kScanModels{"lidar", "simp+lidar"};
-
 }  // namespace
-
-const std::vector<std::string>& sensorModelNames() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> n = maps::sensorModelTypeNames();
-        n.insert(n.end(), kScanModels.begin(), kScanModels.end());
-        return n;
-    }();
-    return names;
-}
 
 const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
     using O = ExperimentOptions;
     static const io::OptionTable<O> t = [] {
         std::vector<std::string> models{""};  // "": the [MetricMap] object map's own
-        models.insert(models.end(), sensorModelNames().begin(), sensorModelNames().end());
+        const auto& methods = model::localizationMethodNames();
+        models.insert(models.end(), methods.begin(), methods.end());
         return io::OptionTable<O>(kExperiment)
             .integer("particles_count", &O::particles_count, ValueRange::atLeast(1), "initial particles (the paper: 5000)")
             .integer("seed", &O::seed, ValueRange::between(0, 4294967295.0), "random seed (mrpt::random::getRandomGenerator())")

@@ -80,7 +80,7 @@ void CObjectMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t versio
             in >> o.default_confidence_threshold >> o.mp_resolution_m >> o.mp_min_probability;
             o.skip_classes_without_noise = ar::readBool(in, kWhere + ": field 'skip_classes_without_noise'");
             in >> o.edt_sigma_m >> o.edt_max_distance_m >> o.edt_resolution_m;
-            o.sensor_model = parseSensorModelType(model);
+            o.sensor_model = model::parseSensorModelType(model);
             o.confidence_thresholds = parseConfidenceThresholds(thresholds, "CObjectMap archive: confidence_thresholds");
 
             simp::world::ObjectMapData data;

@@ -24,15 +24,15 @@ const io::OptionTable<CObjectMap::TLikelihoodOptions>& CObjectMap::TLikelihoodOp
     static const io::OptionTable<O> t =
         io::OptionTable<O>("<prefix>_likelihoodOpts")
             .custom(
-                "sensor_model", "", io::option_text::choices(sensorModelTypeNames()), "the 3D-object sensor model (case-insensitive)",
+                "sensor_model", "", io::option_text::choices(model::sensorModelTypeNames()), "the 3D-object sensor model (case-insensitive)",
                 [](O& o, const std::string& text, const std::string& at) {
                     try {
-                        o.sensor_model = parseSensorModelType(text);
+                        o.sensor_model = model::parseSensorModelType(text);
                     } catch (const std::invalid_argument& e) {
                         throw std::invalid_argument(at + ": " + e.what());
                     }
                 },
-                [](const O& o, int) { return toString(o.sensor_model); })
+                [](const O& o, int) { return model::toString(o.sensor_model); })
             .number("eta", &O::eta, "", ValueRange::open(0, 1), "Eq. combined: likelihood of a false association")
             .custom(
                 "confidence_thresholds", "", "name:value, ...", "`name:value` pairs separated by commas (class names may contain spaces); each entry overrides that class's "

@@ -36,7 +36,7 @@ struct DemoOptions {
     /// the kidnapped run K1 (15 % changes, teleported at half its duration); --no-kidnap: none
     bool kidnap_run = true;
     int particles = 5000;                          ///< MCL particles (paper: 5000)
-    std::string method = "simp";                   ///< sensor model: simp | edt | d | o
+    std::string method = "simp";                   ///< sensor model: a name of model::sensorModelTypeNames()
     /// simp-localize .ini (default: the project's config_ini/simp.ini, the paper's settings)
     std::string localization_config = defaultLocalizationConfig();
     /// simp-map .ini (default: the project's config_ini/mapping.ini when present, else built-in defaults)

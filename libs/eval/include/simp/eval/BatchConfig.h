@@ -10,6 +10,7 @@
 #include <simp/eval/MapMetrics.h>
 #include <simp/eval/TrajectoryMetrics.h>
 #include <simp/io/OptionTable.h>
+#include <simp/model/LocalizationMethods.h>
 
 #include <string>
 #include <vector>
@@ -45,7 +46,9 @@ struct BatchConfig {
     std::vector<BatchSequence> sequences;    ///< required, at least one
     /// Column labels as given (`sequence_names`), one per sequence; empty: the directories' names.
     std::vector<std::string> sequence_names;
-    std::vector<std::string> methods{"simp", "edt", "d", "o"};  ///< simp-localize --method values
+    /// simp-localize --method values (model::localizationMethodNames()); default: the object models
+    /// alone, the paper's comparison, which needs no scans.
+    std::vector<std::string> methods = model::sensorModelTypeNames();
     int repetitions = 5;                     ///< runs per sequence, config and method
     int first_seed = 1;                      ///< seeds first_seed, first_seed + 1, ...
     int cores = 2;                           ///< runs executed in parallel
@@ -83,12 +86,6 @@ const io::OptionTable<TrajMetricsParams>& trajMetricsTable();
 /// [map_metrics] keys (simp-eval batch and `map --config`), declared once.
 const io::OptionTable<MapMatchParams>& mapMetricsTable();
 
-/// The simp-localize --method values a batch runs, in the order of their paper labels (methodLabel()):
-/// the object sensor models (libs/maps' sensorModelTypeNames()) and the LiDAR ones of libs/localization.
-/// eval sits below both, so the list is declared here once and a test
-/// (BatchMethods.AreTheLocalizerSensorModels) holds it equal to localization::sensorModelNames().
-const std::vector<std::string>& batchMethodNames();
-
 /// Reads an .ini file. Lists (sequences, sequence_names, methods, localize_configs, maps, ...)
 /// are separated by spaces or commas. \throw std::runtime_error naming the file and key on a
 /// missing required key, an unknown method, a non-positive count or mismatched list lengths.
@@ -99,7 +96,7 @@ void loadMapMetricsParams(const io::StrictIni& ini, MapMatchParams& p);
 /// Reads [metrics] of `ini` into `p` (simp-eval traj --config too).
 void loadTrajMetricsParams(const io::StrictIni& ini, TrajMetricsParams& p);
 
-/// Paper label of a method: simp -> Ours, edt -> EDT-MCL, d -> D-MCL, o -> O-MCL.
+/// Table label of a method (model::LocalizationMethod::label: simp -> Ours, ...); an unknown name as is.
 std::string methodLabel(const std::string& method);
 
 /// Table row label: the method's paper label, with " (variant)" when the variant is named.

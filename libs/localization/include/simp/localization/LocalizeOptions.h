@@ -37,7 +37,7 @@ enum class ReportFrom {
 struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::size_t particles_count = 5000;   ///< initial particles (paper: 5000)
     std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
-    std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else simp|edt|d|o|lidar|simp+lidar (doc/lidar.md)
+    std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else a model::localizationMethods() name
     double free_cells_threshold = camera::floorplan::kParticleMinFree;  ///< a floor-plan cell is free when p_free >= this
     bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
@@ -115,9 +115,5 @@ struct LocalizerOptions;
 /// [KLD_options], [State], [DetectionNovelty], [SensorResetting]); read through io::StrictIni, whose
 /// checkUnknown() afterwards names every key none of them asked for.
 void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOptions& options);
-
-/// Sensor model names accepted by --method and sensor_model: the object models of
-/// maps::sensorModelTypeNames() and the LiDAR ones (lidar, simp+lidar).
-const std::vector<std::string>& sensorModelNames();
 
 }  // namespace simp::localization

@@ -2,30 +2,16 @@
 /// \file SensorModelTypes.h
 /// Which 3D-object sensor model to use and the likelihood parameters of all of them, as the .ini's
 /// [<prefix>_likelihoodOpts] gives them (CObjectMap::TLikelihoodOptions::modelParams()); SensorModel
-/// builds the selected model with its own parameter struct (SimpSensorModelParams, ...).
+/// builds the selected model with its own parameter struct (SimpSensorModelParams, ...). The models and
+/// their names are declared once with the localization methods (simp/model/LocalizationMethods.h).
 
 #include <simp/maps/ObjectProbabilityMap.h>
-
-#include <string>
-#include <vector>
+#include <simp/model/LocalizationMethods.h>
 
 namespace simp::maps {
 
-/// The paper's model and its three baselines (Sec. "Baseline Comparisons").
-enum class SensorModelType {
-    Simp,  ///< Eqs. globaldist + iouscore + combined (ours)
-    Edt,   ///< EDT-MCL: per-class distance transform, beam-end model of the detection centre
-    D,     ///< D-MCL: p_o of Eq. globaldist only (centre, no shape)
-    O      ///< O-MCL: footprint overlap of Eq. iouscore only (no noise model)
-};
-
-/// The name of every SensorModelType, in the enum's order ("simp", "edt", "d", "o"): the one list
-/// the parser, the .ini checks and simp-localize's --method derive from.
-const std::vector<std::string>& sensorModelTypeNames();
-/// A name of sensorModelTypeNames() (case-insensitive); throws std::invalid_argument listing them.
-SensorModelType parseSensorModelType(const std::string& name);
-/// Lower-case name, as parsed.
-std::string toString(SensorModelType type);
+/// The paper's model and its three baselines; part of CObjectMap's interface, hence named here too.
+using model::SensorModelType;
 
 /// Which model, and the parameters of every model (each takes its own: simpParams(), ... in SensorModel.h).
 struct SensorModelParams {
