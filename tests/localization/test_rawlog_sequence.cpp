@@ -1,6 +1,7 @@
 /// Reading rawlogs in both MRPT formats into frames with odometry increments.
 
 #include "TestUtil.h"
+#include "common/MrptTool.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -77,8 +78,8 @@ namespace {
 
 /// Runs MRPT's rawlog-edit with the plugin; returns its exit status (output in `log`).
 int rawlogEdit(const std::string& args, std::string& log) {
-    const std::string cmd = "rawlog-edit -w --plugins " + std::string(SIMP_BINARY_DIR) + "/lib/libsimp_obs.so " + args +
-                            " 2>&1";
+    const std::string cmd = simp_test::mrptToolEnv() + "rawlog-edit -w --plugins " + std::string(SIMP_BINARY_DIR) +
+                            "/lib/libsimp_obs.so " + args + " 2>&1";
     log.clear();
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return -1;

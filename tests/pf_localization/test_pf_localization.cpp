@@ -3,6 +3,8 @@
 // pf-localization's format, the shipped config_ini/pf-localization.ini, the real /usr/bin/pf-localization
 // run headless (LD_PRELOAD of the plugins) and simp-localize (config_ini/simp.ini) on the same data.
 // Bound: the paper's convergence criterion, 0.3 m (interfaces.md "Metric definitions"), for both.
+#include "common/MrptTool.h"
+
 #include <gtest/gtest.h>
 #include <simp/io/Tum.h>
 #include <simp/localization/LocalizeApp.h>
@@ -98,7 +100,9 @@ TEST(PfLocalization, MrptPfLocalizationEndsWithinTheConvergenceDistanceLikeSimpL
     // pf-localization seeds itself from the clock and, without sensor resetting, a run can collapse on a
     // wrong hypothesis (doc/plugin.md: 11 of 12 runs on this scenario converged). So: two converged runs
     // out of at most four (a false failure needs 3 misses in 4, ~0.2 % at the measured rate).
-    const std::string preload = "LD_PRELOAD='" + kBinary + "/lib/libsimp_obs.so:" + kBinary + "/lib/libsimp_maps.so'";
+    // ASan build: ASan's runtime first, leak checking off for MRPT's program (common/MrptTool.h).
+    const std::string preload =
+        simp_test::mrptToolEnv(kBinary + "/lib/libsimp_obs.so:" + kBinary + "/lib/libsimp_maps.so");
     int converged = 0, runs = 0;
     std::string errors;
     while (runs < 4 && converged < 2 && runs - converged < 3) {

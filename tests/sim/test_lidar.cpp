@@ -12,6 +12,7 @@
 #include <simp/sim/Sequence.h>
 
 #include "SimTestUtil.h"
+#include "common/MrptTool.h"
 
 #include <cstdio>
 #include <string>
@@ -128,8 +129,8 @@ TEST(SimLidar, SequenceWritesOneScanPerStepAndRawlogEditCountsThem) {
     EXPECT_EQ(simp::sim::simulateSequence(world, p, 4, dir3).scans, 0u);
 
     if (std::system("command -v rawlog-edit > /dev/null") != 0) GTEST_SKIP() << "rawlog-edit (mrpt-apps) not installed";
-    const std::string cmd = "rawlog-edit --plugins " + std::string(SIMP_BINARY_DIR) + "/lib/libsimp_obs.so --info -i " +
-                            dir + "/sequence.rawlog 2>&1";
+    const std::string cmd = simp_test::mrptToolEnv() + "rawlog-edit --plugins " + std::string(SIMP_BINARY_DIR) +
+                            "/lib/libsimp_obs.so --info -i " + dir + "/sequence.rawlog 2>&1";
     FILE* pipe = popen(cmd.c_str(), "r");
     ASSERT_NE(pipe, nullptr);
     std::string out;
