@@ -53,7 +53,7 @@ struct StateParams {
     /// (nats) means the set sits beside the right place: not localized (a localized set returns to
     /// `global`), and [SensorResetting] local_fraction of the particles are drawn about that pose.
     /// 0: off.
-    double local_margin = 0.0;
+    double local_margin = 10.0;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.

@@ -33,7 +33,7 @@ struct SensorResettingParams {
     double global_fraction = 0.02;    ///< while searching
     double lost_fraction = 0.0;       ///< while lost (0: the challenger searches, the set keeps its track)
     double localized_fraction = 0.0;  ///< while localized
-    double local_fraction = 0.0;      ///< drawn about a better pose near the estimate ([State] local_margin) ...
+    double local_fraction = 0.1;      ///< drawn about a better pose near the estimate ([State] local_margin) ...
     double local_position_std_m = 0.1;     ///< ... with this spread (m): the climb's resolution, not a fit's noise
     double local_heading_std_rad = 0.05;   ///< ... and this (rad)
     double uniform_share = 0.2;       ///< of the injected particles, this share uniform over free space
