@@ -22,6 +22,14 @@ HypothesisSearchParams on() {
     return p;
 }
 
+/// The synthetic world, its object map and the candidate sampler every search test starts from.
+struct SearchWorld {
+    const simp::world::World w = makeWorld();
+    const std::shared_ptr<simp::maps::CObjectMap> map = makeMap(w);
+    const FreeSpace free_space{w.floorplan, 0.7};
+    const DetectionPoseSampler sampler{*map, free_space};
+};
+
 /// The robot's frames: at `robot`, then after driving 0.6 m and turning, each seeing some objects.
 struct Walk {
     FitWindow window;
@@ -49,10 +57,8 @@ Walk walk(const simp::world::World& w, const simp::maps::CObjectMap& map, const 
 }  // namespace
 
 TEST(DetectionPoseSampler, CandidatesIncludeTheTruePoseAndExplainTheDetection) {
-    const auto w = makeWorld();
-    const auto map = makeMap(w);
-    const FreeSpace free_space(w.floorplan, 0.7);
-    const DetectionPoseSampler sampler(*map, free_space);
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
     const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
     const auto obs = observe(w, robot, {0});
     const auto cands = sampler.candidates({{obs, {}}}, 10000);
@@ -67,10 +73,8 @@ TEST(DetectionPoseSampler, CandidatesIncludeTheTruePoseAndExplainTheDetection) {
 }
 
 TEST(HypothesisSearch, FindsTheTruePlaceFromTheWindow) {
-    const auto w = makeWorld();
-    const auto map = makeMap(w);
-    const FreeSpace free_space(w.floorplan, 0.7);
-    const DetectionPoseSampler sampler(*map, free_space);
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
     const HypothesisSearch search(*map, sampler, on());
     const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
     ASSERT_GE(wk.window.size(), 5u);
@@ -96,10 +100,8 @@ TEST(HypothesisSearch, FindsTheTruePlaceFromTheWindow) {
 }
 
 TEST(HypothesisSearch, NeedsAWindowAndCanBeTurnedOff) {
-    const auto w = makeWorld();
-    const auto map = makeMap(w);
-    const FreeSpace free_space(w.floorplan, 0.7);
-    const DetectionPoseSampler sampler(*map, free_space);
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
     const auto small = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}});
     EXPECT_TRUE(HypothesisSearch(*map, sampler, on()).search(small.window, small.last, small.odometry_now).empty());
     HypothesisSearchParams off = on();
@@ -126,10 +128,8 @@ TEST(StateMonitor, RivalPlacesBlockLocalizedAndMakeItLost) {
 }
 
 TEST(HypothesisSearch, ClimbFromABiasedPoseReachesTheTruePlace) {
-    const auto w = makeWorld();
-    const auto map = makeMap(w);
-    const FreeSpace free_space(w.floorplan, 0.7);
-    const DetectionPoseSampler sampler(*map, free_space);
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
     const HypothesisSearch search(*map, sampler, on());
     const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
     // A set sitting 0.45 m and 0.12 rad beside the truth: a neighbouring mode, not a distinct place.

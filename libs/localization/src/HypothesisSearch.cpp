@@ -60,20 +60,28 @@ std::vector<Hypothesis> HypothesisSearch::search(const FitWindow& window,
 }
 
 void HypothesisSearch::refine(const FitWindow& window, const mrpt::poses::CPose2D& odometry_now, Hypothesis& h) const {
-    // A 3 x 3 x 3 grid about the pose, twice with the step halved.
+    climbGrid(window, odometry_now, h, 2, 1);
+}
+
+void HypothesisSearch::climbGrid(const FitWindow& window, const mrpt::poses::CPose2D& odometry_now, Hypothesis& h,
+                                 int levels, int moves) const {
+    // 3 x 3 x 3 grids about the pose (the pose itself included), moving to the best while it is
+    // better, up to `moves` times per level; the step halved at each level.
     double step_m = m_params.refine_step_m, step_rad = m_params.refine_step_rad;
     std::vector<mrpt::math::TPose2D> grid;
     std::vector<double> g;
-    for (int level = 0; level < 2; ++level, step_m /= 2, step_rad /= 2) {
-        grid.clear();
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b)
-                for (int c = -1; c <= 1; ++c)
-                    grid.push_back({h.pose.x + a * step_m, h.pose.y + b * step_m, mrpt::math::wrapToPi(h.pose.phi + c * step_rad)});
-        window.scorePoses(m_map, grid, odometry_now, g);
-        const std::size_t best = bestFirst(g).front();
-        if (g[best] > h.log_likelihood) h = {grid[best], g[best]};
-    }
+    for (int level = 0; level < levels; ++level, step_m /= 2, step_rad /= 2)
+        for (int move = 0; move < moves; ++move) {
+            grid.clear();
+            for (int a = -1; a <= 1; ++a)
+                for (int b = -1; b <= 1; ++b)
+                    for (int c = -1; c <= 1; ++c)
+                        grid.push_back({h.pose.x + a * step_m, h.pose.y + b * step_m, mrpt::math::wrapToPi(h.pose.phi + c * step_rad)});
+            window.scorePoses(m_map, grid, odometry_now, g);
+            const std::size_t best = bestFirst(g).front();
+            if (!(g[best] > h.log_likelihood)) break;
+            h = {grid[best], g[best]};
+        }
 }
 
 Hypothesis HypothesisSearch::climb(const FitWindow& window, const mrpt::math::TPose2D& pose,
@@ -82,22 +90,7 @@ Hypothesis HypothesisSearch::climb(const FitWindow& window, const mrpt::math::TP
     window.scorePoses(m_map, {pose}, odometry_now, g);
     own = g.front();
     Hypothesis h{pose, own};
-    double step_m = m_params.refine_step_m, step_rad = m_params.refine_step_rad;
-    std::vector<mrpt::math::TPose2D> grid;
-    for (int level = 0; level < 3; ++level, step_m /= 2, step_rad /= 2)
-        for (int move = 0; move < moves; ++move) {
-            grid.clear();
-            for (int a = -1; a <= 1; ++a)
-                for (int b = -1; b <= 1; ++b)
-                    for (int c = -1; c <= 1; ++c)
-                        if (a != 0 || b != 0 || c != 0)
-                            grid.push_back({h.pose.x + a * step_m, h.pose.y + b * step_m,
-                                            mrpt::math::wrapToPi(h.pose.phi + c * step_rad)});
-            window.scorePoses(m_map, grid, odometry_now, g);
-            const std::size_t best = bestFirst(g).front();
-            if (!(g[best] > h.log_likelihood)) break;
-            h = {grid[best], g[best]};
-        }
+    climbGrid(window, odometry_now, h, 3, moves);
     return h;
 }
 

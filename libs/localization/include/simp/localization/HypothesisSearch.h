@@ -68,6 +68,9 @@ class HypothesisSearch {
    private:
     /// Local grid search about h.pose maximizing the window's log-likelihood.
     void refine(const FitWindow& window, const mrpt::poses::CPose2D& odometry_now, Hypothesis& h) const;
+    /// The grid climb behind refine (2 levels, 1 move) and climb (3 levels, `moves` moves).
+    void climbGrid(const FitWindow& window, const mrpt::poses::CPose2D& odometry_now, Hypothesis& h, int levels,
+                   int moves) const;
 
     const maps::CObjectMap& m_map;
     const DetectionPoseSampler& m_sampler;
