@@ -83,14 +83,15 @@ def main():
             kid[group.split('/')[0]].append((lost_at, reloc_at))
     out = {}
     if '--runs' in sys.argv:
-        print('| run | success | conv s | ATE m | ATE rad | steps within bounds |')
-        print('|---|---|---:|---:|---:|---:|')
+        print('| run | success | conv s | ATE m | ATE rad | steps within bounds | kidnap: lost s | localized again s |')
+        print('|---|---|---:|---:|---:|---:|---:|---:|')
         for g, ms in sorted(groups.items()):
             for m in ms:
                 num = lambda k, fmt: fmt % m[k] if m.get(k) is not None else '-'
                 conv = num('convergence_time_s', '%.1f') if m.get('converged') else '-'
                 print(f"| {os.path.basename(m['run'])} | {'yes' if m.get('success') else 'no'} | {conv} | "
-                      f"{num('ate_trans_m', '%.3f')} | {num('ate_rot_rad', '%.3f')} | {100 * m['within_share']:.0f} % |")
+                      f"{num('ate_trans_m', '%.3f')} | {num('ate_rot_rad', '%.3f')} | {100 * m['within_share']:.0f} % | "
+                      f"{num('kidnap_lost_s', '%.1f')} | {num('kidnap_relocalized_s', '%.1f')} |")
         print()
     print('| group | runs | success | ATE m | ATE rad | median conv s | localized steps within bounds |')
     print('|---|---:|---:|---:|---:|---:|---:|')

@@ -120,6 +120,10 @@ void expectSame(const HypothesisSearchParams& a, const HypothesisSearchParams& b
     SIMP_EXPECT_SAME(enabled);
     SIMP_EXPECT_SAME(min_window_detections);
     SIMP_EXPECT_SAME(max_candidates);
+    SIMP_EXPECT_SAME(pair_candidates);
+    SIMP_EXPECT_SAME(pairs.min_separation_m);
+    SIMP_EXPECT_SAME(pairs.tolerance_m);
+    SIMP_EXPECT_SAME(pairs.merge_radius_m);
     SIMP_EXPECT_SAME(refine_top);
     SIMP_EXPECT_SAME(refine_step_m);
     SIMP_EXPECT_SAME(refine_step_rad);
@@ -136,13 +140,23 @@ void expectSame(const ChallengerParams& a, const ChallengerParams& b) {
     SIMP_EXPECT_SAME(win_margin);
     SIMP_EXPECT_SAME(agree_distance_m);
     SIMP_EXPECT_SAME(reset_fraction);
+    SIMP_EXPECT_SAME(reset_by_fit);
+    SIMP_EXPECT_SAME(hypothesis_search);
     SIMP_EXPECT_SAME(particles);
+    SIMP_EXPECT_SAME(window);
+    SIMP_EXPECT_SAME(window_max_age_s);
+    SIMP_EXPECT_SAME(window_object_radius_m);
+    SIMP_EXPECT_SAME(replace_max_fit);
 }
 
 void expectSame(const SensorResettingParams& a, const SensorResettingParams& b) {
     SIMP_EXPECT_SAME(global_fraction);
     SIMP_EXPECT_SAME(lost_fraction);
     SIMP_EXPECT_SAME(localized_fraction);
+    SIMP_EXPECT_SAME(local_fraction);
+    SIMP_EXPECT_SAME(local_position_std_m);
+    SIMP_EXPECT_SAME(local_heading_std_rad);
+    SIMP_EXPECT_SAME(local_min_gain);
     SIMP_EXPECT_SAME(uniform_share);
     SIMP_EXPECT_SAME(sampler.position_std_m);
     SIMP_EXPECT_SAME(sampler.heading_std_rad);

@@ -174,3 +174,66 @@ TEST(StateMonitor, ABetterPoseNearbyBlocksLocalizedAndEndsIt) {
     for (std::size_t i = 0; i < off.localized_min_updates; ++i) m_off.update(0.95, 0.1, biased, true);
     EXPECT_EQ(m_off.state(), LocalizationState::Localized);
 }
+
+TEST(DetectionPoseSampler, PairFitsPlaceTheFrameFromTwoDetectionsWithoutTheirYaw) {
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
+    const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
+    const auto placed = wk.window.placed();
+    ASSERT_EQ(placed.size(), wk.window.size());
+    // Exact detections: one of the fits is the odometry frame's pose in the world, so the robot now
+    // lands on the truth; the heading comes from the pair, so it holds even with the boxes' yaw
+    // ignored (the sampler never reads it here).
+    const auto fits = sampler.pairFits(placed, {}, 100000);
+    ASSERT_FALSE(fits.empty());
+    double best_m = 1e9, best_rad = 1e9;
+    for (const auto& f : fits) {
+        const auto now = (mrpt::poses::CPose2D(f) + wk.odometry_now).asTPose();
+        if (translationError(now, wk.robot_now) < best_m) best_m = translationError(now, wk.robot_now), best_rad = headingError(now, wk.robot_now);
+    }
+    EXPECT_LT(best_m, 0.05);
+    EXPECT_LT(best_rad, 0.01);
+    EXPECT_EQ(sampler.pairFits(placed, {}, 3).size(), 3u);  // capped
+    DetectionPoseSampler::PairFitParams far;
+    far.min_separation_m = 100.0;  // no pair that far apart: nothing
+    EXPECT_TRUE(sampler.pairFits(placed, far, 100000).empty());
+}
+
+TEST(HypothesisSearch, PairCandidatesFindThePlaceWithoutAUsableDetectionInTheFrame) {
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
+    const auto wk = walk(w, *map, {3.0, 2.0, 0.4}, {{0, 1}, {2}, {3, 4}, {0}});
+    HypothesisSearchParams p = on();
+    p.pair_candidates = 0;
+    // Without the current frame's detections there are no single fits: only pairs can find it.
+    EXPECT_TRUE(HypothesisSearch(*map, sampler, p).search(wk.window, {}, wk.odometry_now).empty());
+    p.pair_candidates = 2000;
+    const auto hyps = HypothesisSearch(*map, sampler, p).search(wk.window, {}, wk.odometry_now);
+    ASSERT_FALSE(hyps.empty());
+    EXPECT_LT(translationError(hyps.front().pose, wk.robot_now), 0.15);
+    EXPECT_LT(headingError(hyps.front().pose, wk.robot_now), 0.1);
+}
+
+TEST(FitWindow, WithAnObjectRadiusAnObjectSeenOftenCountsOnce) {
+    const SearchWorld sw;
+    const auto& [w, map, free_space, sampler] = sw;
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo(1, 1, 0);
+    const auto score = [&](const StateParams& p, int times_0, int times_1) {
+        FitWindow win(p);
+        for (int i = 0; i < times_0; ++i) win.add(*map, observe(w, robot, {0}), odo, i);
+        for (int i = 0; i < times_1; ++i) win.add(*map, observe(w, robot, {1}), odo, 10 + i);
+        std::vector<double> ll;
+        win.scorePoses(*map, {robot, {robot.x + 0.5, robot.y, robot.phi}}, odo, ll);
+        return ll;
+    };
+    StateParams every;
+    const auto one_0 = score(every, 1, 0), one_1 = score(every, 0, 1), many = score(every, 5, 1);
+    StateParams objects;
+    objects.object_radius_m = 1.0;
+    const auto once = score(objects, 5, 1);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_NEAR(many[i], 5 * one_0[i] + one_1[i], 1e-9);  // every detection counts
+        EXPECT_NEAR(once[i], one_0[i] + one_1[i], 1e-9);      // the object once (the mean of its 5)
+    }
+}

@@ -93,4 +93,61 @@ std::vector<mrpt::math::TPose2D> DetectionPoseSampler::candidates(const std::vec
     return out;
 }
 
+std::vector<mrpt::math::TPose2D> DetectionPoseSampler::pairFits(const std::vector<FitWindow::Placed>& placed,
+                                                                const PairFitParams& params,
+                                                                std::size_t max_count) const {
+    // Repeated detections of one object are one point (their mean): pairs of them say nothing.
+    struct Point {
+        int map_class;
+        Eigen::Vector2d xy;
+        int n;
+    };
+    std::vector<Point> points;
+    const double r2 = params.merge_radius_m * params.merge_radius_m;
+    for (const auto& d : placed) {
+        if (d.map_class < 0 || static_cast<std::size_t>(d.map_class) >= m_by_class.size() ||
+            m_by_class[static_cast<std::size_t>(d.map_class)].empty())
+            continue;
+        const Eigen::Vector2d xy(d.x, d.y);
+        auto same = std::find_if(points.begin(), points.end(), [&](const Point& p) {
+            return p.map_class == d.map_class && (p.xy / p.n - xy).squaredNorm() <= r2;
+        });
+        if (same != points.end())
+            same->xy += xy, ++same->n;
+        else
+            points.push_back({d.map_class, xy, 1});
+    }
+    for (auto& p : points) p.xy /= p.n;
+    struct Pair {
+        std::size_t i, j;
+        double separation;
+    };
+    std::vector<Pair> pairs;
+    for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t j = i + 1; j < points.size(); ++j) {
+            const double sep = (points[j].xy - points[i].xy).norm();
+            if (sep >= params.min_separation_m) pairs.push_back({i, j, sep});
+        }
+    std::stable_sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) { return a.separation > b.separation; });
+    std::vector<mrpt::math::TPose2D> out;
+    for (const auto& pr : pairs) {
+        const Point& p = points[pr.i];
+        const Point& q = points[pr.j];
+        const Eigen::Vector2d dpq = q.xy - p.xy;
+        const double det_angle = std::atan2(dpq.y(), dpq.x());
+        for (const std::size_t a : m_by_class[static_cast<std::size_t>(p.map_class)])
+            for (const std::size_t b : m_by_class[static_cast<std::size_t>(q.map_class)]) {
+                if (a == b) continue;
+                const Eigen::Vector2d dab = m_expected_centre_m[b] - m_expected_centre_m[a];
+                if (std::abs(dab.norm() - pr.separation) > params.tolerance_m) continue;
+                if (out.size() >= max_count) return out;
+                const double phi = mrpt::math::wrapToPi(std::atan2(dab.y(), dab.x()) - det_angle);
+                const double c = std::cos(phi), s = std::sin(phi);
+                const Eigen::Vector2d& ta = m_expected_centre_m[a];
+                out.push_back({ta.x() - (c * p.xy.x() - s * p.xy.y()), ta.y() - (s * p.xy.x() + c * p.xy.y()), phi});
+            }
+    }
+    return out;
+}
+
 }  // namespace simp::localization

@@ -34,7 +34,16 @@ std::vector<Hypothesis> HypothesisSearch::search(const FitWindow& window,
                                                  const mrpt::poses::CPose2D& odometry_now) const {
     std::vector<Hypothesis> out;
     if (!m_params.enabled || window.size() < m_params.min_window_detections) return out;
-    const auto candidates = m_sampler.candidates(observations, m_params.max_candidates);
+    std::vector<mrpt::math::TPose2D> candidates;
+    if (m_params.pair_candidates > 0) {
+        // Fits of the odometry frame, the robot now where odometry_now lands in it.
+        for (const auto& world_T_odo : m_sampler.pairFits(window.placed(), m_params.pairs, m_params.pair_candidates)) {
+            const auto now = (mrpt::poses::CPose2D(world_T_odo) + odometry_now).asTPose();
+            if (m_sampler.freeSpace().isFree(now.x, now.y)) candidates.push_back(now);
+        }
+    }
+    const auto singles = m_sampler.candidates(observations, m_params.max_candidates);
+    candidates.insert(candidates.end(), singles.begin(), singles.end());
     if (candidates.empty()) return out;
     std::vector<double> score;
     window.scorePoses(m_map, candidates, odometry_now, score);

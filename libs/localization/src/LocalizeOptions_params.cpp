@@ -59,6 +59,7 @@ const io::OptionTable<SensorResettingParams>& resettingParamsTable() {
             .number("local_fraction", &O::local_fraction, "", kFraction, "... drawn about a better pose near the estimate ([State] local_margin)")
             .number("local_position_std_m", &O::local_position_std_m, "m", kNonNegative, "... with this position spread")
             .number("local_heading_std_rad", &O::local_heading_std_rad, "rad", kNonNegative, "... and heading spread")
+            .number("local_min_gain", &O::local_min_gain, "nats", kNonNegative, "> 0: drawn when the pose nearby is better by this (0: at [State] local_margin)")
             .number("uniform_share", &O::uniform_share, "", kFraction, "of the injected particles, this share uniform over free space")
             .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", kNonNegative,
                     "spread of a drawn position about the exact fit")
@@ -76,6 +77,13 @@ const io::OptionTable<HypothesisSearchParams>& searchParamsTable() {
             .flag("enabled", &O::enabled, "search distinct poses that explain the fit window")
             .integer("min_window_detections", &O::min_window_detections, kCount, "fewer detections in the window: no search")
             .integer("max_candidates", &O::max_candidates, kCount, "exact fits scored per search (the first ones)")
+            .integer("pair_candidates", &O::pair_candidates, ValueRange::between(0, 1e6), "fits of detection pairs on map object pairs scored first (0: off)")
+            .number("pair_min_separation_m", [](auto& o) -> auto& { return o.pairs.min_separation_m; }, "m", kNonNegative,
+                    "detection pairs closer than this are not used")
+            .number("pair_tolerance_m", [](auto& o) -> auto& { return o.pairs.tolerance_m; }, "m", kNonNegative,
+                    "|map distance - detection distance| allowed")
+            .number("pair_merge_radius_m", [](auto& o) -> auto& { return o.pairs.merge_radius_m; }, "m", kNonNegative,
+                    "window detections of one class this close are one object")
             .integer("refine_top", &O::refine_top, kCount, "best distinct candidates refined by a local grid search")
             .number("refine_step_m", &O::refine_step_m, "m", ValueRange::positive(), "first grid step; halved once")
             .number("refine_step_rad", &O::refine_step_rad, "rad", ValueRange::positive(), "first grid step; halved once")
@@ -98,7 +106,11 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
             .number("reset_fraction", &O::reset_fraction, "", kFraction, "of its particles reset from the detections per update")
             .flag("reset_by_fit", &O::reset_by_fit, "reset_fraction x the share of the window its estimate leaves unexplained")
             .flag("hypothesis_search", &O::hypothesis_search, "until localized: reset about the places that explain the detections since lost best; localized only when no other place explains them as well")
-            .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)");
+            .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)")
+            .integer("window", &O::window, ValueRange::between(1, 1000), "detections since lost it is judged on (the last ones)")
+            .number("window_max_age_s", &O::window_max_age_s, "s", ValueRange::positive(), "... and not older than this")
+            .number("window_object_radius_m", &O::window_object_radius_m, "m", kNonNegative, "> 0: detections of one object within this distance count once (their mean)")
+            .number("replace_max_fit", &O::replace_max_fit, "", kFraction, "it replaces the current set elsewhere only when the current estimate explains at most this share of the window");
     return t;
 }
 

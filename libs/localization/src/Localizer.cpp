@@ -141,6 +141,16 @@ std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mr
     return static_cast<std::size_t>(std::ceil(bounded));
 }
 
+namespace {
+StateParams challengerWindow(const LocalizerOptions& options) {
+    StateParams p = options.state;
+    p.fit_window = options.challenger.window;
+    p.fit_max_age_s = options.challenger.window_max_age_s;
+    p.object_radius_m = options.challenger.window_object_radius_m;
+    return p;
+}
+}  // namespace
+
 Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::maps::COccupancyGridMap2D& floorplan,
                      const LocalizerOptions& options)
     : m_map(std::move(map)),
@@ -153,6 +163,7 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_search(*m_map, m_sampler, options.search),
       m_challenger_search(*m_map, m_sampler, alwaysEnabled(options.search)),
       m_fit(options.state),
+      m_since_lost(challengerWindow(options)),
       m_monitor(options.state) {
     m_pf.m_options = m_opts.pf;
 }
@@ -292,7 +303,7 @@ void Localizer::seedChallenger(const std::vector<WeightedObservation>& observati
     ch.places.clear();
     ch.targets.clear();
     if (!m_opts.challenger.hypothesis_search || ch.monitor.state() == LocalizationState::Localized) return;
-    ch.places = m_challenger_search.search(m_fit, observations, m_odometry);
+    ch.places = m_challenger_search.search(m_since_lost, observations, m_odometry);
     // Only the places about as good as the best: the weighing that follows decides between them.
     if (ch.places.empty()) return;
     const double floor = ch.places.front().log_likelihood - m_opts.state.rival_margin;
@@ -350,6 +361,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     for (auto& o : observations) {
         o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
         m_fit.add(*m_map, o.obs, m_odometry, t_s);
+        if (m_opts.challenger.enabled) m_since_lost.add(*m_map, o.obs, m_odometry, t_s);
     }
 
     StepRecord rec;
@@ -389,7 +401,8 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
         fit.local_gain = best.log_likelihood - own;
         fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
-        if (m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
+        const double draw_gain = m_opts.resetting.local_min_gain > 0 ? m_opts.resetting.local_min_gain : m_opts.state.local_margin;
+        if (draw_gain > 0 && fit.local_gain >= draw_gain) m_local_target = best.pose;
     }
     if (trigger) {
         const auto before = m_monitor.state();
@@ -399,7 +412,10 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         // The detections of the lost hypothesis say nothing about the next one, unless a rival
         // place explained them (then they are what will find it again).
         const bool rival_won = fit.rival_advantage >= m_opts.state.rival_lost_margin;
-        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost && !rival_won) m_fit.clear();
+        if (m_monitor.state() == LocalizationState::Lost && before != LocalizationState::Lost && !rival_won) {
+            m_fit.clear();
+            m_since_lost.clear();
+        }
         if (challenge(t_s, now, rec.detections > 0, before)) {  // the challenger's set is the filter now
             now = mrpt::poses::CPose2D(m_summary->estimate) + m_pending;
             fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
@@ -419,6 +435,12 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     rec.local_gain = fit.local_gain;
     rec.local_offset_m = fit.local_offset_m;
     rec.challenger_particles = m_challenger ? m_challenger->mcl->size() : 0;
+    if (m_challenger) {
+        rec.challenger_estimate = m_challenger->now;
+        rec.challenger_state = m_challenger->monitor.state();
+        rec.challenger_fit = m_challenger->fit;
+        rec.challenger_lead = m_challenger->lead;
+    }
     rec.state = m_monitor.state();
     return rec;
 }
@@ -441,11 +463,14 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     auto& ch = *m_challenger;
     ch.summary = summarizeParticles(*ch.mcl, m_opts.experiment);
     const auto ch_now = mrpt::poses::CPose2D(ch.summary->estimate) + m_pending;
-    auto ch_fit = m_fit.evaluate(*m_map, ch_now, m_odometry, t_s);
+    auto ch_fit = m_since_lost.evaluate(*m_map, ch_now, m_odometry, t_s);
     // A place elsewhere that explains the window about as well makes it ambiguous: not localized.
     if (!ch.places.empty())
-        ch_fit.rival_advantage = m_challenger_search.rivalAdvantage(m_fit, ch.places, ch_now.asTPose(), m_odometry);
+        ch_fit.rival_advantage = m_challenger_search.rivalAdvantage(m_since_lost, ch.places, ch_now.asTPose(), m_odometry);
     ch.unexplained = ch_fit.scored >= m_opts.state.fit_min_detections ? 1.0 - ch_fit.fraction : 1.0;
+    ch.now = ch_now.asTPose();
+    ch.fit = ch_fit.fraction;
+    ch.lead = std::nan("");
     ch.monitor.update(ch.summary->cluster_weight,
                       std::sqrt(ch.summary->cluster_cov(0, 0) + ch.summary->cluster_cov(1, 1)), ch_fit, had_detections);
     if (ch.monitor.state() == LocalizationState::Lost) {  // it settled on a wrong place: search again
@@ -458,9 +483,13 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     // explains them at least as well (it passes the tests the current set fails now); elsewhere it
     // must explain them better by win_margin.
     std::vector<double> log_lik;
-    m_fit.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
+    m_since_lost.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
     const bool near = (ch_now.asTPose() - now.asTPose()).norm() <= c.agree_distance_m;
-    if (log_lik[1] - log_lik[0] < (near ? 0.0 : c.win_margin)) return false;
+    ch.lead = log_lik[1] - log_lik[0];
+    if (ch.lead < (near ? 0.0 : c.win_margin)) return false;
+    if (!near && c.replace_max_fit < 1.0 &&
+        m_since_lost.evaluate(*m_map, now, m_odometry, t_s).fraction > c.replace_max_fit)
+        return false;
     m_mcl = std::move(ch.mcl);
     m_summary = ch.summary;
     m_monitor = ch.monitor;

@@ -10,7 +10,8 @@ namespace simp::localization {
 std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
            "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
-           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles,local_gain_nats,local_offset_m";
+           "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles,local_gain_nats,local_offset_m,"
+           "challenger_x_m,challenger_y_m,challenger_phi_rad,challenger_state,challenger_fit,challenger_lead_nats";
 }
 
 std::string stepsCsvLine(const StepRecord& s) {
@@ -40,6 +41,18 @@ std::string stepsCsvLine(const StepRecord& s) {
         } else {
             out += ",";
         }
+    }
+    const auto number = [&](double v, const char* fmt) {
+        if (!std::isfinite(v)) return std::string(",");
+        std::snprintf(line, sizeof(line), fmt, v);
+        return std::string(line);
+    };
+    if (s.challenger_particles > 0) {
+        out += number(s.challenger_estimate.x, ",%.6f") + number(s.challenger_estimate.y, ",%.6f") +
+               number(s.challenger_estimate.phi, ",%.6f") + "," + toString(s.challenger_state) +
+               number(s.challenger_fit, ",%.4f") + number(s.challenger_lead, ",%.3f");
+    } else {
+        out += ",,,,,";
     }
     out += "\n";
     return out;

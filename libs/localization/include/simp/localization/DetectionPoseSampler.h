@@ -8,6 +8,7 @@
 #include <mrpt/random/RandomGenerators.h>
 #include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/FreeSpace.h>
+#include <simp/localization/LocalizationState.h>
 #include <simp/maps/CObjectMap.h>
 
 #include <vector>
@@ -40,6 +41,22 @@ class DetectionPoseSampler {
      * of the detections and the map's objects). */
     std::vector<mrpt::math::TPose2D> candidates(const std::vector<WeightedObservation>& observations,
                                                 std::size_t max_count) const;
+
+    /// Pairs of detections (placed in one frame F, e.g. the odometry frame) against pairs of map
+    /// objects of their classes.
+    struct PairFitParams {
+        double min_separation_m = 1.0;  ///< detection pairs closer than this (m) are not used
+        double tolerance_m = 0.4;       ///< |map distance - detection distance| allowed (m)
+        double merge_radius_m = 0.5;    ///< detections of one class this close are one object first
+    };
+    /** Every rigid fit of a pair of detections on a pair of map objects of their classes at about
+     * the same distance: the pose of frame F in the world (F (+) detection = object). The heading
+     * comes from the pair's geometry, not from a box's yaw, so it is as good as the positions over
+     * the pair's separation; pairs farther apart first, at most `max_count`. */
+    std::vector<mrpt::math::TPose2D> pairFits(const std::vector<FitWindow::Placed>& placed, const PairFitParams& params,
+                                              std::size_t max_count) const;
+
+    const FreeSpace& freeSpace() const { return m_free; }
 
    private:
     struct Usable {

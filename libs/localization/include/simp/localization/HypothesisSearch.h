@@ -24,6 +24,10 @@ struct HypothesisSearchParams {
     bool enabled = false;                 ///< true: search (measured not better yet: doc/results-localization.md)
     std::size_t min_window_detections = 5; ///< fewer detections in the window: no search
     std::size_t max_candidates = 4000;    ///< exact fits scored per search (the first ones)
+    /// Also fits of pairs of window detections on pairs of map objects (DetectionPoseSampler::pairFits),
+    /// at most this many, scored before the single-detection fits; 0: off.
+    std::size_t pair_candidates = 500;
+    DetectionPoseSampler::PairFitParams pairs;  ///< pair_min_separation_m, pair_tolerance_m, pair_merge_radius_m
     std::size_t refine_top = 8;           ///< best distinct candidates refined by a local grid search
     double refine_step_m = 0.2;           ///< first grid step (m); halved once
     double refine_step_rad = 0.1;         ///< first grid step (rad); halved once

@@ -47,7 +47,8 @@ struct StateParams {
     /// > 0: the window counts objects, not detections: detections of one class whose centres (odometry
     /// frame) lie within this distance (m) are one object, explained when any of its detections is.
     /// A moved object seen ten times is then one unexplained object, not ten (a false `lost`), and a
-    /// biased object seen ten times is one vote in the fit. 0: every detection counts (the first round).
+    /// biased object seen ten times is one vote in the fit; the window's log-likelihood (scorePoses)
+    /// takes the mean over an object's detections. 0: every detection counts (the first round).
     double object_radius_m = 0.0;
     /// > 0: a pose near the estimate (HypothesisSearch::climb) that explains the window better by this
     /// (nats) means the set sits beside the right place: not localized (a localized set returns to
@@ -83,6 +84,12 @@ class FitWindow {
                  const mrpt::poses::CPose2D& odometry_now, double t_now_s);
     void clear() { m_items.clear(); }
     std::size_t size() const { return m_items.size(); }
+    /// A detection of the window placed in the odometry frame: its map class and box centre (m).
+    struct Placed {
+        int map_class = -1;
+        double x = 0, y = 0;
+    };
+    std::vector<Placed> placed() const;
     /// Log-likelihood of the whole window (sum over its detections, each at its frame's pose) for
     /// each robot pose `poses[i]` now (world), added to log_lik[i] (resized to poses.size()).
     void scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::math::TPose2D>& poses,

@@ -36,6 +36,9 @@ struct SensorResettingParams {
     double local_fraction = 0.1;      ///< drawn about a better pose near the estimate ([State] local_margin) ...
     double local_position_std_m = 0.1;     ///< ... with this spread (m): the climb's resolution, not a fit's noise
     double local_heading_std_rad = 0.05;   ///< ... and this (rad)
+    /// > 0: the draws about a better pose nearby happen when it is better by this (nats), below
+    /// [State] local_margin (which also ends `localized`); 0: at local_margin
+    double local_min_gain = 0.0;
     double uniform_share = 0.2;       ///< of the injected particles, this share uniform over free space
     DetectionPoseSamplerParams sampler;
 };
@@ -64,6 +67,17 @@ struct ChallengerParams {
     /// only when its estimate beats every other place by [State] rival_margin
     bool hypothesis_search = true;
     std::size_t particles = 0;      ///< particles of the challenger (0: [LocalizationExperiment] particles_count)
+    /// The detections since `lost` it is judged on (its search, its fit and rival test, its lead
+    /// over the current estimate): the last `window` of them, not older than window_max_age_s (s).
+    /// Longer than [State] fit_window: look-alike places that explain a dozen detections do not
+    /// explain the robot's whole way since `lost`.
+    std::size_t window = 24;
+    double window_max_age_s = 30;
+    double window_object_radius_m = 0;  ///< its [State] object_radius_m (> 0: an object counts once)
+    /// It replaces the current set at a distinct place only when the current estimate explains at
+    /// most this share of the window: a kidnapped estimate explains next to nothing, an estimate
+    /// made `lost` by moved furniture still explains part (1: no such condition).
+    double replace_max_fit = 0.25;
 };
 
 /// Everything the localizer reads from the .ini.
@@ -157,6 +171,11 @@ class Localizer {
         double unexplained = 1.0;  ///< share of the fit window its estimate does not explain
         std::vector<Hypothesis> places;   ///< hypothesis_search: the distinct places found at this update
         std::vector<Hypothesis> targets;  ///< those its resetting draws about (about as good as the best)
+        /// for steps.csv: its estimate now, the fit of it and its lead on the window (NaN: not yet)
+        static constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+        mrpt::math::TPose2D now{kNone, kNone, kNone};
+        double fit = kNone;
+        double lead = kNone;
     };
     std::optional<Challenger> m_challenger;
     std::size_t m_challengers_started = 0, m_challengers_won = 0;
@@ -172,6 +191,7 @@ class Localizer {
     /// the last update (the next one draws [SensorResetting] local_fraction of the set about it).
     std::optional<mrpt::math::TPose2D> m_local_target;
     FitWindow m_fit;
+    FitWindow m_since_lost;  ///< [Challenger] window: what the challenger is judged on
     StateMonitor m_monitor;
     SkippedDetections m_skipped;
     mrpt::poses::CPose2D m_pending;   ///< odometry not yet applied to the particles

@@ -37,6 +37,13 @@ struct StepRecord {
     double local_gain = std::numeric_limits<double>::quiet_NaN();
     double local_offset_m = std::numeric_limits<double>::quiet_NaN();
     std::size_t challenger_particles = 0;  ///< particles of the challenger searching while `lost` (0: none)
+    /// The challenger after the frame (when there is one): its estimate, state, the fit of its
+    /// estimate and its lead over the current estimate on the fit window (nats; NaN until it is
+    /// `localized`, when the two are compared). Written empty without a challenger.
+    mrpt::math::TPose2D challenger_estimate;
+    LocalizationState challenger_state = LocalizationState::Global;
+    double challenger_fit = std::numeric_limits<double>::quiet_NaN();
+    double challenger_lead = std::numeric_limits<double>::quiet_NaN();
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 
