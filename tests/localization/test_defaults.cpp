@@ -145,7 +145,6 @@ void expectSame(const ChallengerParams& a, const ChallengerParams& b) {
     SIMP_EXPECT_SAME(particles);
     SIMP_EXPECT_SAME(window);
     SIMP_EXPECT_SAME(window_max_age_s);
-    SIMP_EXPECT_SAME(window_object_radius_m);
     SIMP_EXPECT_SAME(replace_max_fit);
 }
 
@@ -156,7 +155,6 @@ void expectSame(const SensorResettingParams& a, const SensorResettingParams& b) 
     SIMP_EXPECT_SAME(local_fraction);
     SIMP_EXPECT_SAME(local_position_std_m);
     SIMP_EXPECT_SAME(local_heading_std_rad);
-    SIMP_EXPECT_SAME(local_min_gain);
     SIMP_EXPECT_SAME(uniform_share);
     SIMP_EXPECT_SAME(sampler.position_std_m);
     SIMP_EXPECT_SAME(sampler.heading_std_rad);

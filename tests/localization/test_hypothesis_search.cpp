@@ -213,27 +213,3 @@ TEST(HypothesisSearch, PairCandidatesFindThePlaceWithoutAUsableDetectionInTheFra
     EXPECT_LT(translationError(hyps.front().pose, wk.robot_now), 0.15);
     EXPECT_LT(headingError(hyps.front().pose, wk.robot_now), 0.1);
 }
-
-TEST(FitWindow, WithAnObjectRadiusAnObjectSeenOftenCountsOnce) {
-    const SearchWorld sw;
-    const auto& [w, map, free_space, sampler] = sw;
-    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
-    const mrpt::poses::CPose2D odo(1, 1, 0);
-    const auto score = [&](const StateParams& p, int times_0, int times_1) {
-        FitWindow win(p);
-        for (int i = 0; i < times_0; ++i) win.add(*map, observe(w, robot, {0}), odo, i);
-        for (int i = 0; i < times_1; ++i) win.add(*map, observe(w, robot, {1}), odo, 10 + i);
-        std::vector<double> ll;
-        win.scorePoses(*map, {robot, {robot.x + 0.5, robot.y, robot.phi}}, odo, ll);
-        return ll;
-    };
-    StateParams every;
-    const auto one_0 = score(every, 1, 0), one_1 = score(every, 0, 1), many = score(every, 5, 1);
-    StateParams objects;
-    objects.object_radius_m = 1.0;
-    const auto once = score(objects, 5, 1);
-    for (std::size_t i = 0; i < 2; ++i) {
-        EXPECT_NEAR(many[i], 5 * one_0[i] + one_1[i], 1e-9);  // every detection counts
-        EXPECT_NEAR(once[i], one_0[i] + one_1[i], 1e-9);      // the object once (the mean of its 5)
-    }
-}

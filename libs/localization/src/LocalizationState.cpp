@@ -82,54 +82,17 @@ void FitWindow::scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::
     log_lik.assign(poses.size(), 0.0);
     if (poses.empty() || m_items.empty()) return;
     const auto model = map.sensorModel();
-    // With object_radius_m > 0 the detections of one object (its class, within the radius in the
-    // odometry frame, as in evaluate) count once, by their mean: an unexplained object seen ten
-    // times is one piece of evidence, not ten.
-    std::vector<std::size_t> group(m_items.size());
-    std::vector<std::size_t> group_size;
-    {
-        std::vector<std::size_t> heads;  // the newest item of each group
-        const double r2 = m_params.object_radius_m * m_params.object_radius_m;
-        for (std::size_t n = m_items.size(); n-- > 0;) {
-            const auto& it = m_items[n];
-            std::size_t g = heads.size();
-            if (m_params.object_radius_m > 0)
-                for (std::size_t h = 0; h < heads.size(); ++h) {
-                    const auto& o = m_items[heads[h]];
-                    if (o.map_class == it.map_class &&
-                        (o.odo_x - it.odo_x) * (o.odo_x - it.odo_x) + (o.odo_y - it.odo_y) * (o.odo_y - it.odo_y) <= r2) {
-                        g = h;
-                        break;
-                    }
-                }
-            if (g == heads.size()) heads.push_back(n), group_size.push_back(0);
-            group[n] = g;
-            ++group_size[g];
-        }
-    }
     std::vector<mrpt::math::TPose2D> item_poses(poses.size());
-    std::vector<double> sum;
-    const bool per_object = m_params.object_radius_m > 0;
-    for (std::size_t g = group_size.size(); g-- > 0;) {  // oldest object first
-        sum.assign(poses.size(), 0.0);
-        std::size_t used = 0;
-        for (std::size_t n = 0; n < m_items.size(); ++n) {
-            if (group[n] != g) continue;
-            const auto& it = m_items[n];
-            const int cls = map.usableClassOf(*it.obs, it.k);
-            if (cls < 0) continue;
-            const auto prepared = model->prepare(cls, it.obs->boxInRobot(it.k), it.obs->footprintInRobot(it.k));
-            if (!prepared) continue;
-            // The frame's robot pose for a robot at p now: p (+) (odometry_now^-1 (+) its odometry pose).
-            const mrpt::poses::CPose2D rel = it.odometry_pose - odometry_now;
-            for (std::size_t i = 0; i < poses.size(); ++i)
-                item_poses[i] = (mrpt::poses::CPose2D(poses[i]) + rel).asTPose();
-            model->accumulateLogLikelihoods(&*prepared, 1, item_poses.data(), item_poses.size(), sum.data());
-            ++used;
-        }
-        if (used == 0) continue;
-        const double w = per_object ? 1.0 / static_cast<double>(used) : 1.0;
-        for (std::size_t i = 0; i < poses.size(); ++i) log_lik[i] += w * sum[i];
+    for (const auto& it : m_items) {
+        const int cls = map.usableClassOf(*it.obs, it.k);
+        if (cls < 0) continue;
+        const auto prepared = model->prepare(cls, it.obs->boxInRobot(it.k), it.obs->footprintInRobot(it.k));
+        if (!prepared) continue;
+        // The frame's robot pose for a robot at p now: p (+) (odometry_now^-1 (+) its odometry pose).
+        const mrpt::poses::CPose2D rel = it.odometry_pose - odometry_now;
+        for (std::size_t i = 0; i < poses.size(); ++i)
+            item_poses[i] = (mrpt::poses::CPose2D(poses[i]) + rel).asTPose();
+        model->accumulateLogLikelihoods(&*prepared, 1, item_poses.data(), item_poses.size(), log_lik.data());
     }
 }
 

@@ -59,7 +59,6 @@ const io::OptionTable<SensorResettingParams>& resettingParamsTable() {
             .number("local_fraction", &O::local_fraction, "", kFraction, "... drawn about a better pose near the estimate ([State] local_margin)")
             .number("local_position_std_m", &O::local_position_std_m, "m", kNonNegative, "... with this position spread")
             .number("local_heading_std_rad", &O::local_heading_std_rad, "rad", kNonNegative, "... and heading spread")
-            .number("local_min_gain", &O::local_min_gain, "nats", kNonNegative, "> 0: drawn when the pose nearby is better by this (0: at [State] local_margin)")
             .number("uniform_share", &O::uniform_share, "", kFraction, "of the injected particles, this share uniform over free space")
             .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", kNonNegative,
                     "spread of a drawn position about the exact fit")
@@ -109,7 +108,6 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
             .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)")
             .integer("window", &O::window, ValueRange::between(1, 1000), "detections since lost it is judged on (the last ones)")
             .number("window_max_age_s", &O::window_max_age_s, "s", ValueRange::positive(), "... and not older than this")
-            .number("window_object_radius_m", &O::window_object_radius_m, "m", kNonNegative, "> 0: detections of one object within this distance count once (their mean)")
             .number("replace_max_fit", &O::replace_max_fit, "", kFraction, "it replaces the current set elsewhere only when the current estimate explains at most this share of the window");
     return t;
 }

@@ -146,7 +146,6 @@ StateParams challengerWindow(const LocalizerOptions& options) {
     StateParams p = options.state;
     p.fit_window = options.challenger.window;
     p.fit_max_age_s = options.challenger.window_max_age_s;
-    p.object_radius_m = options.challenger.window_object_radius_m;
     return p;
 }
 }  // namespace
@@ -401,8 +400,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
         fit.local_gain = best.log_likelihood - own;
         fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
-        const double draw_gain = m_opts.resetting.local_min_gain > 0 ? m_opts.resetting.local_min_gain : m_opts.state.local_margin;
-        if (draw_gain > 0 && fit.local_gain >= draw_gain) m_local_target = best.pose;
+        if (m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
     }
     if (trigger) {
         const auto before = m_monitor.state();

@@ -47,8 +47,7 @@ struct StateParams {
     /// > 0: the window counts objects, not detections: detections of one class whose centres (odometry
     /// frame) lie within this distance (m) are one object, explained when any of its detections is.
     /// A moved object seen ten times is then one unexplained object, not ten (a false `lost`), and a
-    /// biased object seen ten times is one vote in the fit; the window's log-likelihood (scorePoses)
-    /// takes the mean over an object's detections. 0: every detection counts (the first round).
+    /// biased object seen ten times is one vote in the fit. 0: every detection counts (the first round).
     double object_radius_m = 0.0;
     /// > 0: a pose near the estimate (HypothesisSearch::climb) that explains the window better by this
     /// (nats) means the set sits beside the right place: not localized (a localized set returns to

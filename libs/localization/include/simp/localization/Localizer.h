@@ -36,9 +36,6 @@ struct SensorResettingParams {
     double local_fraction = 0.1;      ///< drawn about a better pose near the estimate ([State] local_margin) ...
     double local_position_std_m = 0.1;     ///< ... with this spread (m): the climb's resolution, not a fit's noise
     double local_heading_std_rad = 0.05;   ///< ... and this (rad)
-    /// > 0: the draws about a better pose nearby happen when it is better by this (nats), below
-    /// [State] local_margin (which also ends `localized`); 0: at local_margin
-    double local_min_gain = 0.0;
     double uniform_share = 0.2;       ///< of the injected particles, this share uniform over free space
     DetectionPoseSamplerParams sampler;
 };
@@ -73,7 +70,6 @@ struct ChallengerParams {
     /// explain the robot's whole way since `lost`.
     std::size_t window = 24;
     double window_max_age_s = 30;
-    double window_object_radius_m = 0;  ///< its [State] object_radius_m (> 0: an object counts once)
     /// It replaces the current set at a distinct place only when the current estimate explains at
     /// most this share of the window: a kidnapped estimate explains next to nothing, an estimate
     /// made `lost` by moved furniture still explains part (1: no such condition).
