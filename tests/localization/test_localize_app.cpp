@@ -185,15 +185,22 @@ TEST(LocalizeApp, BaselinesRunEndToEnd) {
     }
 }
 
-TEST(LocalizeApp, BaselineConfigFilesSelectTheirModel) {
+TEST(LocalizeApp, TheBaselinesRunFromSimpIniWithMethod) {
+    // One .ini for every method (issue #15): the baselines are simp.ini with --method, nothing else changed.
     const Scenario& sc = sharedScenario();
+    LocalizeApp simp_app;
+    simp_app.initialize(std::vector<std::string>{"simp-localize", "--world", sc.world_dir, "--rawlog", sc.rawlog_path,
+                                                 "--out", freshOutputDir("ini_simp_only"), "--quiet", "--config",
+                                                 std::string(SIMP_SOURCE_DIR) + "/config_ini/simp.ini"});
     for (const std::string method : {"simp", "edt", "d", "o"}) {
         const std::string out = freshOutputDir("ini_" + method);
         LocalizeApp app;
         app.initialize(std::vector<std::string>{"simp-localize", "--world", sc.world_dir, "--rawlog", sc.rawlog_path,
                                                 "--out", out, "--quiet", "--config",
-                                                std::string(SIMP_SOURCE_DIR) + "/config_ini/" + method + ".ini"});
+                                                std::string(SIMP_SOURCE_DIR) + "/config_ini/simp.ini", "--method", method});
         EXPECT_EQ(app.options.experiment.particles_count, 5000u) << method;  // the paper's particle count
+        EXPECT_EQ(app.options.challenger.window, simp_app.options.challenger.window) << method;
+        EXPECT_EQ(app.options.search.pair_candidates, simp_app.options.search.pair_candidates) << method;
         app.options.experiment.particles_count = 200;                        // keep the test fast
         app.run();
         EXPECT_EQ(app.sensor_model_used, method);

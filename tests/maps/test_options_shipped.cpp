@@ -13,7 +13,7 @@ TEST(LikelihoodOptionsShipped, EveryIniGivesThePinnedValues) {
     const auto& table = CObjectMap::TLikelihoodOptions::table();
     EXPECT_EQ(simp_test::valueLines("(defaults)", "likelihoodOpts", table, CObjectMap::TLikelihoodOptions{}),
               simp_test::shippedValues("(defaults)", "likelihoodOpts"));
-    for (const char* name : {"simp.ini", "simp-paper.ini", "d.ini", "edt.ini", "o.ini", "pf-localization.ini"}) {
+    for (const char* name : {"simp.ini", "simp-paper.ini", "pf-localization.ini"}) {
         SCOPED_TRACE(name);
         const simp::io::StrictIni cfg(simp_test::shippedIni(name));
         CObjectMap::TLikelihoodOptions o;
@@ -49,7 +49,7 @@ TEST(CreationOptionsShipped, EveryIniGivesThePinnedValuesAndTheDocTableIsTheDecl
     const auto& table = simp::maps::creationOptionsTable();
     std::string report;
     EXPECT_TRUE(simp_test::matchesPinned("(defaults)", table, CObjectMap::TMapDefinition{}, report)) << report;
-    for (const char* name : {"simp.ini", "simp-paper.ini", "d.ini", "edt.ini", "o.ini"}) {
+    for (const char* name : {"simp.ini", "simp-paper.ini"}) {
         const simp::io::StrictIni cfg(simp_test::shippedIni(name));
         CObjectMap::TMapDefinition o;
         table.load(cfg, "MetricMap_semanticObjectMap_00_creationOpts", o);
