@@ -116,6 +116,15 @@ TEST(LocalizeApp, SimpConvergesGloballyAndStaysConverged) {
         EXPECT_NEAR(tum[i].t_s, sc.groundtruth[first_localized + i].t_s, 1e-6);
     EXPECT_EQ(lineCount(out + "/steps.csv"), sc.groundtruth.size() + 1);
     EXPECT_EQ(slurp(out + "/steps.csv").substr(0, stepsCsvHeader().size()), stepsCsvHeader());
+    {  // every row has the header's columns, with and without a challenger
+        const std::string header = stepsCsvHeader();
+        const auto commas = [](const std::string& t) { return std::count(t.begin(), t.end(), ','); };
+        std::istringstream rows(slurp(out + "/steps.csv"));
+        for (std::string row; std::getline(rows, row);) ASSERT_EQ(commas(row), commas(header)) << row;
+        StepRecord with_challenger;
+        with_challenger.challenger_particles = 10;
+        EXPECT_EQ(commas(stepsCsvLine(with_challenger)), commas(header));
+    }
     EXPECT_EQ(lineCount(out + "/final_particles.txt"), app.final_particles.size());
     EXPECT_GT(fs::file_size(out + "/trajectory.png"), 1000u);
     // A converged set is concentrated: its spread is well below the room size.

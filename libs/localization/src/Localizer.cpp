@@ -57,6 +57,14 @@ std::vector<mrpt::math::TPose2D> drawAbout(const std::vector<Hypothesis>& target
     return poses;
 }
 
+/// [State] with the challenger's window ([Challenger] window, window_max_age_s).
+StateParams challengerWindow(const LocalizerOptions& options) {
+    StateParams p = options.state;
+    p.fit_window = options.challenger.window;
+    p.fit_max_age_s = options.challenger.window_max_age_s;
+    return p;
+}
+
 }  // namespace
 
 mrpt::bayes::CParticleFilter::TParticleFilterOptions LocalizerOptions::defaultPfOptions() {
@@ -140,15 +148,6 @@ std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mr
                                       static_cast<double>(kld.KLD_maxSampleSize));
     return static_cast<std::size_t>(std::ceil(bounded));
 }
-
-namespace {
-StateParams challengerWindow(const LocalizerOptions& options) {
-    StateParams p = options.state;
-    p.fit_window = options.challenger.window;
-    p.fit_max_age_s = options.challenger.window_max_age_s;
-    return p;
-}
-}  // namespace
 
 Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::maps::COccupancyGridMap2D& floorplan,
                      const LocalizerOptions& options)
@@ -468,7 +467,7 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     ch.unexplained = ch_fit.scored >= m_opts.state.fit_min_detections ? 1.0 - ch_fit.fraction : 1.0;
     ch.now = ch_now.asTPose();
     ch.fit = ch_fit.fraction;
-    ch.lead = std::nan("");
+    ch.lead = Challenger::kNone;
     ch.monitor.update(ch.summary->cluster_weight,
                       std::sqrt(ch.summary->cluster_cov(0, 0) + ch.summary->cluster_cov(1, 1)), ch_fit, had_detections);
     if (ch.monitor.state() == LocalizationState::Lost) {  // it settled on a wrong place: search again

@@ -27,32 +27,21 @@ std::string stepsCsvLine(const StepRecord& s) {
                   s.fit_detections, std_xy, std_phi, s.injected);
     std::string out(line);
     out.pop_back();  // the newline, after the rival column
-    if (std::isfinite(s.rival_advantage)) {
-        std::snprintf(line, sizeof(line), ",%.3f", s.rival_advantage);
-        out += line;
-    } else {
-        out += ",";
-    }
-    out += "," + std::to_string(s.challenger_particles);
-    for (const double v : {s.local_gain, s.local_offset_m}) {
-        if (std::isfinite(v)) {
-            std::snprintf(line, sizeof(line), ",%.3f", v);
-            out += line;
-        } else {
-            out += ",";
-        }
-    }
+    // An optional number: empty when not computed (NaN).
     const auto number = [&](double v, const char* fmt) {
         if (!std::isfinite(v)) return std::string(",");
         std::snprintf(line, sizeof(line), fmt, v);
         return std::string(line);
     };
+    out += number(s.rival_advantage, ",%.3f");
+    out += "," + std::to_string(s.challenger_particles);
+    out += number(s.local_gain, ",%.3f") + number(s.local_offset_m, ",%.3f");
     if (s.challenger_particles > 0) {
         out += number(s.challenger_estimate.x, ",%.6f") + number(s.challenger_estimate.y, ",%.6f") +
                number(s.challenger_estimate.phi, ",%.6f") + "," + toString(s.challenger_state) +
                number(s.challenger_fit, ",%.4f") + number(s.challenger_lead, ",%.3f");
     } else {
-        out += ",,,,,";
+        out += ",,,,,,";
     }
     out += "\n";
     return out;
