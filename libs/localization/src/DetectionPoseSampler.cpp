@@ -7,6 +7,16 @@
 #include <cmath>
 
 namespace simp::localization {
+namespace {
+
+// The pose of a frame at heading phi in which a point seen at `seen_in_frame` lies at `object_world`.
+mrpt::math::TPose2D placeFrame(const Eigen::Vector2d& object_world, const Eigen::Vector2d& seen_in_frame, double phi) {
+    const double c = std::cos(phi), s = std::sin(phi);
+    return {object_world.x() - (c * seen_in_frame.x() - s * seen_in_frame.y()),
+            object_world.y() - (s * seen_in_frame.x() + c * seen_in_frame.y()), phi};
+}
+
+}  // namespace
 
 DetectionPoseSampler::DetectionPoseSampler(const maps::CObjectMap& map, const FreeSpace& free_space,
                                            const DetectionPoseSamplerParams& params)
@@ -52,10 +62,8 @@ mrpt::math::TPose2D DetectionPoseSampler::fit(const Usable& d, std::size_t o, in
     // Robot heading that turns the detected box onto the object's (modulo the box symmetry).
     const double phi = mrpt::math::wrapToPi(geometry::yawOf(m_map.data().objects[o].box) - d.yaw_robot_rad +
                                             turn * (2.0 * M_PI / d.symmetries) + dphi);
-    const Eigen::Vector2d& target = m_expected_centre_m[o];
-    const double c = std::cos(phi), s = std::sin(phi);
-    return {target.x() - (c * d.centre_robot_m.x() - s * d.centre_robot_m.y()) + dx,
-            target.y() - (s * d.centre_robot_m.x() + c * d.centre_robot_m.y()) + dy, phi};
+    const auto p = placeFrame(m_expected_centre_m[o], d.centre_robot_m, phi);
+    return {p.x + dx, p.y + dy, phi};
 }
 
 std::vector<mrpt::math::TPose2D> DetectionPoseSampler::sample(const std::vector<WeightedObservation>& observations,
@@ -142,9 +150,7 @@ std::vector<mrpt::math::TPose2D> DetectionPoseSampler::pairFits(const std::vecto
                 if (std::abs(dab.norm() - pr.separation) > params.tolerance_m) continue;
                 if (out.size() >= max_count) return out;
                 const double phi = mrpt::math::wrapToPi(std::atan2(dab.y(), dab.x()) - det_angle);
-                const double c = std::cos(phi), s = std::sin(phi);
-                const Eigen::Vector2d& ta = m_expected_centre_m[a];
-                out.push_back({ta.x() - (c * p.xy.x() - s * p.xy.y()), ta.y() - (s * p.xy.x() + c * p.xy.y()), phi});
+                out.push_back(placeFrame(m_expected_centre_m[a], p.xy, phi));
             }
     }
     return out;
