@@ -38,6 +38,24 @@ struct WeightedMean {
     mrpt::math::TPose2D pose() const { return {sx / sw, sy / sw, std::atan2(ss, sc)}; }
 };
 
+/// Sum of w d d^T over particles, element (r, c) += (w d_r) d_c: the roundings of Eigen's
+/// `w * d * d.transpose()` added to a matrix, in scalars that stay in registers (Eigen's product
+/// went through a stack temporary whose reload stalled on store forwarding: 40 % of a summary).
+struct Scatter {
+    double m[3][3] = {};
+    void add(double w, double d0, double d1, double d2) {
+        const double wd[3] = {w * d0, w * d1, w * d2}, d[3] = {d0, d1, d2};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) m[r][c] += wd[r] * d[c];
+    }
+    Eigen::Matrix3d matrix() const {
+        Eigen::Matrix3d out;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out(r, c) = m[r][c];
+        return out;
+    }
+};
+
 /// The particles' bins on the cluster grid: x and y cells counted from the smallest occupied one,
 /// heading bin in [0, nb).
 struct ParticleBins {
@@ -142,8 +160,9 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
 
     std::vector<double> cos_phi(n), sin_phi(n);
     for (std::size_t i = 0; i < n; ++i) {
-        cos_phi[i] = std::cos(pdf.m_particles[i].d.phi);
-        sin_phi[i] = std::sin(pdf.m_particles[i].d.phi);
+        const double phi = pdf.m_particles[i].d.phi;  // one value for both: the compiler makes it one sincos
+        cos_phi[i] = std::cos(phi);
+        sin_phi[i] = std::sin(phi);
     }
     WeightedMean all;
     double sum_w2 = 0;
@@ -153,11 +172,12 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     }
     s.ess = 1.0 / sum_w2;
     s.mean = all.pose();
+    Scatter cov;
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = pdf.m_particles[i].d;
-        const Eigen::Vector3d d(p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
-        s.cov += w[i] * d * d.transpose();
+        cov.add(w[i], p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
     }
+    s.cov = cov.matrix();
 
     if (opts.estimate_mode == EstimateMode::Mean) {
         s.estimate = s.mean;
@@ -220,14 +240,15 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     if (cluster.sw > 0) {
         s.estimate = cluster.pose();
         s.cluster_weight = cluster.sw;
+        Scatter cluster_cov;
         for (std::size_t i = 0; i < n; ++i) {
             const auto& p = pdf.m_particles[i].d;
             const double dx = p.x - peak.x, dy = p.y - peak.y;
             if (dx * dx + dy * dy > r2 || std::abs(wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
                 continue;
-            const Eigen::Vector3d d(p.x - s.estimate.x, p.y - s.estimate.y, wrapToPi(p.phi - s.estimate.phi));
-            s.cluster_cov += (w[i] / cluster.sw) * d * d.transpose();
+            cluster_cov.add(w[i] / cluster.sw, p.x - s.estimate.x, p.y - s.estimate.y, wrapToPi(p.phi - s.estimate.phi));
         }
+        s.cluster_cov = cluster_cov.matrix();
     } else {
         s.estimate = peak;
         s.cluster_weight = seed.sw;
