@@ -81,7 +81,8 @@ double neighbourhoodWeight(const ParticleBins& b, long x, long y, int phi, const
             for (int dp = (b.nb >= 3 ? -1 : 0); dp <= (b.nb >= 3 ? 1 : 0); ++dp) {
                 const long u = x + dx - b.min_x, v = y + dy - b.min_y;
                 if (u < 0 || v < 0 || u >= b.span_x || v >= b.span_y) continue;  // no particle there
-                sum += weight(u, v, (phi + dp + b.nb) % b.nb);
+                const int q = phi + dp;  // in [-1, nb]: wrapped without a division
+                sum += weight(u, v, q < 0 ? q + b.nb : q >= b.nb ? q - b.nb : q);
             }
     return sum;
 }
@@ -223,7 +224,8 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     WeightedMean seed;
     for (std::size_t i = 0; i < n; ++i) {
         const long dx = b.x[i] - best.x, dy = b.y[i] - best.y;
-        const int dp = ((b.phi[i] - best.phi) % b.nb + b.nb) % b.nb;
+        const int dphi = b.phi[i] - best.phi;  // in (-nb, nb): its residue mod nb without a division
+        const int dp = dphi < 0 ? dphi + b.nb : dphi;
         if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == b.nb - 1 || b.nb < 3))
             seed.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
     }
