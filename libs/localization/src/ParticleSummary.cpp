@@ -13,16 +13,23 @@
 namespace simp::localization {
 namespace {
 
-/// Normalized linear weights of the particles (sum = 1), from their log-weights.
-std::vector<double> normalizedWeights(const mrpt::poses::CPosePDFParticles& pdf) {
+/// The particles' poses and normalized linear weights (sum = 1, from the log-weights) in arrays:
+/// the summary visits them in several passes, and a deque's indexing costs a division each.
+void particleArrays(const mrpt::poses::CPosePDFParticles& pdf, std::vector<mrpt::math::TPose2D>& pose,
+                    std::vector<double>& w) {
     const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
-    std::vector<double> w(n);
+    pose.resize(n);
+    w.resize(n);
     double max_lw = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < n; ++i) max_lw = std::max(max_lw, pdf.m_particles[i].log_w);
+    std::size_t i = 0;
+    for (const auto& p : pdf.m_particles) {
+        pose[i] = p.d;
+        w[i++] = p.log_w;
+        max_lw = std::max(max_lw, p.log_w);
+    }
     double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += (w[i] = std::exp(pdf.m_particles[i].log_w - max_lw));
+    for (auto& x : w) sum += (x = std::exp(x - max_lw));
     for (auto& x : w) x /= sum;
-    return w;
 }
 
 /// Weighted circular mean; the caller passes each particle's cos/sin of phi, computed once per summary.
@@ -155,27 +162,29 @@ PeakBin peakOnSortedBins(const ParticleBins& b, const std::vector<double>& w) {
 ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, const ExperimentOptions& opts) {
     const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
     if (n == 0) throw std::invalid_argument("summarizeParticles: empty particle set");
-    const std::vector<double> w = normalizedWeights(pdf);
+    std::vector<mrpt::math::TPose2D> pose;
+    std::vector<double> w;
+    particleArrays(pdf, pose, w);
     ParticleSummary s;
     s.particle_count = n;
 
     std::vector<double> cos_phi(n), sin_phi(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const double phi = pdf.m_particles[i].d.phi;  // one value for both: the compiler makes it one sincos
+        const double phi = pose[i].phi;  // one value for both: the compiler makes it one sincos
         cos_phi[i] = std::cos(phi);
         sin_phi[i] = std::sin(phi);
     }
     WeightedMean all;
     double sum_w2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        all.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
+        all.add(pose[i], cos_phi[i], sin_phi[i], w[i]);
         sum_w2 += w[i] * w[i];
     }
     s.ess = 1.0 / sum_w2;
     s.mean = all.pose();
     Scatter cov;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
+        const auto& p = pose[i];
         cov.add(w[i], p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
     }
     s.cov = cov.matrix();
@@ -198,7 +207,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     b.min_x = b.min_y = std::numeric_limits<long>::max();
     long max_x = std::numeric_limits<long>::min(), max_y = std::numeric_limits<long>::min();
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
+        const auto& p = pose[i];
         const double u = (wrapTo2Pi(p.phi)) / (2 * M_PI) * b.nb;
         const double fx = std::floor(p.x / opts.cluster_cell_m), fy = std::floor(p.y / opts.cluster_cell_m);
         if (!(std::abs(fx) < 1e15 && std::abs(fy) < 1e15))
@@ -227,14 +236,14 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         const int dphi = b.phi[i] - best.phi;  // in (-nb, nb): its residue mod nb without a division
         const int dp = dphi < 0 ? dphi + b.nb : dphi;
         if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == b.nb - 1 || b.nb < 3))
-            seed.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
+            seed.add(pose[i], cos_phi[i], sin_phi[i], w[i]);
     }
     const mrpt::math::TPose2D peak = seed.pose();
     // Cluster: particles near the peak pose.
     WeightedMean cluster;
     const double r2 = opts.cluster_radius_m * opts.cluster_radius_m;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
+        const auto& p = pose[i];
         const double dx = p.x - peak.x, dy = p.y - peak.y;
         if (dx * dx + dy * dy <= r2 && std::abs(wrapToPi(p.phi - peak.phi)) <= opts.cluster_max_dphi)
             cluster.add(p, cos_phi[i], sin_phi[i], w[i]);
@@ -244,7 +253,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
         s.cluster_weight = cluster.sw;
         Scatter cluster_cov;
         for (std::size_t i = 0; i < n; ++i) {
-            const auto& p = pdf.m_particles[i].d;
+            const auto& p = pose[i];
             const double dx = p.x - peak.x, dy = p.y - peak.y;
             if (dx * dx + dy * dy > r2 || std::abs(wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
                 continue;
