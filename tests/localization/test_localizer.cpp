@@ -183,6 +183,10 @@ TEST(Localizer, OccupiedBinCountIsTheNumberOfDistinctBins) {
     for (auto& p : spread.m_particles)
         p.d = {rng.drawUniform(-500.0, 500.0), rng.drawUniform(-500.0, 500.0), rng.drawUniform(-M_PI, M_PI)};
     EXPECT_EQ(occupiedBinCount(compact, kld), distinct(compact));
+    mrpt::poses::CPosePDFParticles building(3000);  // a building-wide set: the bitmap too
+    for (auto& p : building.m_particles)
+        p.d = {rng.drawUniform(-30.0, 30.0), rng.drawUniform(-20.0, 20.0), rng.drawUniform(-M_PI, M_PI)};
+    EXPECT_EQ(occupiedBinCount(building, kld), distinct(building));
     EXPECT_EQ(occupiedBinCount(spread, kld), distinct(spread));
     spread.m_particles[5].d.x = 1e17;  // bin products beyond 64 bits
     EXPECT_EQ(occupiedBinCount(spread, kld), distinct(spread));

@@ -76,9 +76,19 @@ void drawPolygon(Canvas& canvas, const geometry::ConvexPolygon& poly, const cv::
     for (std::size_t i = 0; i < poly.n; ++i) pts.push_back(canvas.toPixel(poly.v[i].x(), poly.v[i].y()));
     cv::Mat3b map = canvas.map();
     if (fill_alpha > 0) {
-        cv::Mat3b overlay = map.clone();
-        cv::fillConvexPoly(overlay, pts, color, cv::LINE_AA);
-        cv::addWeighted(overlay, fill_alpha, map, 1.0 - fill_alpha, 0.0, map);
+        // Blended only about the polygon (its anti-aliased edge reaches a pixel beyond its bounds):
+        // elsewhere the blend of a pixel with itself gives the pixel back, and blending the whole
+        // map once per object was most of a trajectory picture's time.
+        const cv::Rect bounds = cv::boundingRect(pts) + cv::Point(-3, -3) + cv::Size(6, 6);
+        const cv::Rect roi = bounds & cv::Rect(0, 0, map.cols, map.rows);
+        if (!roi.empty()) {
+            std::vector<cv::Point> local(pts);
+            for (auto& q : local) q -= roi.tl();
+            cv::Mat3b area = map(roi);
+            cv::Mat3b overlay = area.clone();
+            cv::fillConvexPoly(overlay, local, color, cv::LINE_AA);
+            cv::addWeighted(overlay, fill_alpha, area, 1.0 - fill_alpha, 0.0, area);
+        }
     }
     cv::polylines(map, pts, true, color, thickness, cv::LINE_AA);
 }

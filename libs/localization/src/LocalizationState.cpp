@@ -82,6 +82,8 @@ void FitWindow::scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::
     log_lik.assign(poses.size(), 0.0);
     if (poses.empty() || m_items.empty()) return;
     const auto model = map.sensorModel();
+    // CPose2D caches its cos/sin: built once, each pose pays one sincos for all the window's items.
+    const std::vector<mrpt::poses::CPose2D> now(poses.begin(), poses.end());
     std::vector<mrpt::math::TPose2D> item_poses(poses.size());
     for (const auto& it : m_items) {
         const int cls = map.usableClassOf(*it.obs, it.k);
@@ -91,7 +93,7 @@ void FitWindow::scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::
         // The frame's robot pose for a robot at p now: p (+) (odometry_now^-1 (+) its odometry pose).
         const mrpt::poses::CPose2D rel = it.odometry_pose - odometry_now;
         for (std::size_t i = 0; i < poses.size(); ++i)
-            item_poses[i] = (mrpt::poses::CPose2D(poses[i]) + rel).asTPose();
+            item_poses[i] = (now[i] + rel).asTPose();
         model->accumulateLogLikelihoods(&*prepared, 1, item_poses.data(), item_poses.size(), log_lik.data());
     }
 }

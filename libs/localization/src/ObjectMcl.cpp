@@ -112,11 +112,30 @@ double ObjectMcl::normalizeWeights(double* out_max_log_w) {
 }
 
 double ObjectMcl::ESS() const {
+    // MRPT's arithmetic, each exp taken once instead of once per pass.
+    std::vector<double> linear(m_particles.size());
     double sum_linear = 0;
-    for (const auto& p : m_particles) sum_linear += std::exp(p.log_w);
+    std::size_t i = 0;
+    for (const auto& p : m_particles) sum_linear += (linear[i++] = std::exp(p.log_w));
     double cum = 0;
-    for (const auto& p : m_particles) cum += mrpt::square(std::exp(p.log_w) / sum_linear);
+    for (const double w : linear) cum += mrpt::square(w / sum_linear);
     return cum == 0 ? 0 : 1.0 / (static_cast<double>(m_particles.size()) * cum);
+}
+
+void ObjectMcl::performSubstitution(const std::vector<size_t>& indx) {
+    // MRPT's result (new particle k = old particle sorted(indx)[k], weight included) without its
+    // new deque and its sort of an index list that resampling already gives sorted.
+    std::vector<size_t> sorted_copy;
+    const std::vector<size_t>* sorted = &indx;
+    if (!std::is_sorted(indx.begin(), indx.end())) {
+        sorted_copy = indx;
+        std::sort(sorted_copy.begin(), sorted_copy.end());
+        sorted = &sorted_copy;
+    }
+    m_old_particles.assign(m_particles.begin(), m_particles.end());
+    m_particles.resize(sorted->size());
+    auto it = m_particles.begin();
+    for (const size_t k : *sorted) *it++ = m_old_particles[k];
 }
 
 double ObjectMcl::meanLogWeight() const {
@@ -198,16 +217,21 @@ double ObjectMcl::PF_SLAM_computeObservationLikelihoodForParticle(
 }
 
 void ObjectMcl::pruneOutsideFreeSpace(double dyn_range) {
+    m_free.resize(m_particles.size());  // looked up once for both passes
+    std::size_t n = 0;
+    for (const auto& p : m_particles) m_free[n++] = m_free_space->isFree(p.d.x, p.d.y);
     double floor_lw = 0.0;
     if (!prune_keeps_weight) {
         double max_lw = -std::numeric_limits<double>::infinity();
+        std::size_t i = 0;
         for (const auto& p : m_particles)
-            if (m_free_space->isFree(p.d.x, p.d.y)) max_lw = std::max(max_lw, p.log_w);
+            if (m_free[i++]) max_lw = std::max(max_lw, p.log_w);
         if (!std::isfinite(max_lw)) max_lw = 0.0;  // every particle left: all get the same weight
         floor_lw = max_lw - dyn_range;
     }
+    std::size_t i = 0;
     for (auto& p : m_particles) {
-        if (m_free_space->isFree(p.d.x, p.d.y)) continue;
+        if (m_free[i++]) continue;
         p.d = m_free_space->drawUniform();
         if (!prune_keeps_weight) p.log_w = floor_lw;
         ++m_last_pruned;

@@ -13,16 +13,23 @@
 namespace simp::localization {
 namespace {
 
-/// Normalized linear weights of the particles (sum = 1), from their log-weights.
-std::vector<double> normalizedWeights(const mrpt::poses::CPosePDFParticles& pdf) {
+/// The particles' poses and normalized linear weights (sum = 1, from the log-weights) in arrays:
+/// the summary visits them in several passes, and a deque's indexing costs a division each.
+void particleArrays(const mrpt::poses::CPosePDFParticles& pdf, std::vector<mrpt::math::TPose2D>& pose,
+                    std::vector<double>& w) {
     const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
-    std::vector<double> w(n);
+    pose.resize(n);
+    w.resize(n);
     double max_lw = -std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < n; ++i) max_lw = std::max(max_lw, pdf.m_particles[i].log_w);
+    std::size_t i = 0;
+    for (const auto& p : pdf.m_particles) {
+        pose[i] = p.d;
+        w[i++] = p.log_w;
+        max_lw = std::max(max_lw, p.log_w);
+    }
     double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += (w[i] = std::exp(pdf.m_particles[i].log_w - max_lw));
+    for (auto& x : w) sum += (x = std::exp(x - max_lw));
     for (auto& x : w) x /= sum;
-    return w;
 }
 
 /// Weighted circular mean; the caller passes each particle's cos/sin of phi, computed once per summary.
@@ -36,6 +43,24 @@ struct WeightedMean {
         ss += w * sin_phi;
     }
     mrpt::math::TPose2D pose() const { return {sx / sw, sy / sw, std::atan2(ss, sc)}; }
+};
+
+/// Sum of w d d^T over particles, element (r, c) += (w d_r) d_c: the roundings of Eigen's
+/// `w * d * d.transpose()` added to a matrix, in scalars that stay in registers (Eigen's product
+/// went through a stack temporary whose reload stalled on store forwarding: 40 % of a summary).
+struct Scatter {
+    double m[3][3] = {};
+    void add(double w, double d0, double d1, double d2) {
+        const double wd[3] = {w * d0, w * d1, w * d2}, d[3] = {d0, d1, d2};
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) m[r][c] += wd[r] * d[c];
+    }
+    Eigen::Matrix3d matrix() const {
+        Eigen::Matrix3d out;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) out(r, c) = m[r][c];
+        return out;
+    }
 };
 
 /// The particles' bins on the cluster grid: x and y cells counted from the smallest occupied one,
@@ -63,7 +88,8 @@ double neighbourhoodWeight(const ParticleBins& b, long x, long y, int phi, const
             for (int dp = (b.nb >= 3 ? -1 : 0); dp <= (b.nb >= 3 ? 1 : 0); ++dp) {
                 const long u = x + dx - b.min_x, v = y + dy - b.min_y;
                 if (u < 0 || v < 0 || u >= b.span_x || v >= b.span_y) continue;  // no particle there
-                sum += weight(u, v, (phi + dp + b.nb) % b.nb);
+                const int q = phi + dp;  // in [-1, nb]: wrapped without a division
+                sum += weight(u, v, q < 0 ? q + b.nb : q >= b.nb ? q - b.nb : q);
             }
     return sum;
 }
@@ -136,28 +162,32 @@ PeakBin peakOnSortedBins(const ParticleBins& b, const std::vector<double>& w) {
 ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, const ExperimentOptions& opts) {
     const std::size_t n = pdf.m_particles.size();  // not size(): MRPT's accessors dynamic_cast per call
     if (n == 0) throw std::invalid_argument("summarizeParticles: empty particle set");
-    const std::vector<double> w = normalizedWeights(pdf);
+    std::vector<mrpt::math::TPose2D> pose;
+    std::vector<double> w;
+    particleArrays(pdf, pose, w);
     ParticleSummary s;
     s.particle_count = n;
 
     std::vector<double> cos_phi(n), sin_phi(n);
     for (std::size_t i = 0; i < n; ++i) {
-        cos_phi[i] = std::cos(pdf.m_particles[i].d.phi);
-        sin_phi[i] = std::sin(pdf.m_particles[i].d.phi);
+        const double phi = pose[i].phi;  // one value for both: the compiler makes it one sincos
+        cos_phi[i] = std::cos(phi);
+        sin_phi[i] = std::sin(phi);
     }
     WeightedMean all;
     double sum_w2 = 0;
     for (std::size_t i = 0; i < n; ++i) {
-        all.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
+        all.add(pose[i], cos_phi[i], sin_phi[i], w[i]);
         sum_w2 += w[i] * w[i];
     }
     s.ess = 1.0 / sum_w2;
     s.mean = all.pose();
+    Scatter cov;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
-        const Eigen::Vector3d d(p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
-        s.cov += w[i] * d * d.transpose();
+        const auto& p = pose[i];
+        cov.add(w[i], p.x - s.mean.x, p.y - s.mean.y, wrapToPi(p.phi - s.mean.phi));
     }
+    s.cov = cov.matrix();
 
     if (opts.estimate_mode == EstimateMode::Mean) {
         s.estimate = s.mean;
@@ -177,7 +207,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     b.min_x = b.min_y = std::numeric_limits<long>::max();
     long max_x = std::numeric_limits<long>::min(), max_y = std::numeric_limits<long>::min();
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
+        const auto& p = pose[i];
         const double u = (wrapTo2Pi(p.phi)) / (2 * M_PI) * b.nb;
         const double fx = std::floor(p.x / opts.cluster_cell_m), fy = std::floor(p.y / opts.cluster_cell_m);
         if (!(std::abs(fx) < 1e15 && std::abs(fy) < 1e15))
@@ -203,16 +233,17 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     WeightedMean seed;
     for (std::size_t i = 0; i < n; ++i) {
         const long dx = b.x[i] - best.x, dy = b.y[i] - best.y;
-        const int dp = ((b.phi[i] - best.phi) % b.nb + b.nb) % b.nb;
+        const int dphi = b.phi[i] - best.phi;  // in (-nb, nb): its residue mod nb without a division
+        const int dp = dphi < 0 ? dphi + b.nb : dphi;
         if (std::abs(dx) <= 1 && std::abs(dy) <= 1 && (dp <= 1 || dp == b.nb - 1 || b.nb < 3))
-            seed.add(pdf.m_particles[i].d, cos_phi[i], sin_phi[i], w[i]);
+            seed.add(pose[i], cos_phi[i], sin_phi[i], w[i]);
     }
     const mrpt::math::TPose2D peak = seed.pose();
     // Cluster: particles near the peak pose.
     WeightedMean cluster;
     const double r2 = opts.cluster_radius_m * opts.cluster_radius_m;
     for (std::size_t i = 0; i < n; ++i) {
-        const auto& p = pdf.m_particles[i].d;
+        const auto& p = pose[i];
         const double dx = p.x - peak.x, dy = p.y - peak.y;
         if (dx * dx + dy * dy <= r2 && std::abs(wrapToPi(p.phi - peak.phi)) <= opts.cluster_max_dphi)
             cluster.add(p, cos_phi[i], sin_phi[i], w[i]);
@@ -220,14 +251,15 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     if (cluster.sw > 0) {
         s.estimate = cluster.pose();
         s.cluster_weight = cluster.sw;
+        Scatter cluster_cov;
         for (std::size_t i = 0; i < n; ++i) {
-            const auto& p = pdf.m_particles[i].d;
+            const auto& p = pose[i];
             const double dx = p.x - peak.x, dy = p.y - peak.y;
             if (dx * dx + dy * dy > r2 || std::abs(wrapToPi(p.phi - peak.phi)) > opts.cluster_max_dphi)
                 continue;
-            const Eigen::Vector3d d(p.x - s.estimate.x, p.y - s.estimate.y, wrapToPi(p.phi - s.estimate.phi));
-            s.cluster_cov += (w[i] / cluster.sw) * d * d.transpose();
+            cluster_cov.add(w[i] / cluster.sw, p.x - s.estimate.x, p.y - s.estimate.y, wrapToPi(p.phi - s.estimate.phi));
         }
+        s.cluster_cov = cluster_cov.matrix();
     } else {
         s.estimate = peak;
         s.cluster_weight = seed.sw;

@@ -10,6 +10,7 @@
 #include <simp/localization/ScanLikelihood.h>
 #include <simp/maps/CObjectMap.h>
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -106,6 +107,8 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     size_t particlesCount() const override { return m_particles.size(); }
     double normalizeWeights(double* out_max_log_w = nullptr) override;
     double ESS() const override;
+    /// MRPT's substitution (particle k = old particle sorted(indx)[k]) in place.
+    void performSubstitution(const std::vector<size_t>& indx) override;
     /// @}
 
    private:
@@ -118,6 +121,8 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     std::shared_ptr<const FreeSpace> m_free_space;
     std::vector<mrpt::math::TPose2D> m_poses;  ///< scratch: particle poses of the batch
     std::vector<double> m_log_lik;             ///< scratch: their log-likelihoods
+    std::vector<std::uint8_t> m_free;          ///< scratch: particle in the free space (pruning)
+    std::vector<CParticleList::value_type> m_old_particles;  ///< scratch: the set before a substitution
     std::size_t m_last_K = 0, m_last_pruned = 0, m_last_injected = 0;
     double m_w_slow = -1.0, m_w_fast = -1.0;  ///< recovery averages; < 0 = not started
 };
