@@ -154,6 +154,7 @@ TEST(HypothesisSearch, ClimbFromABiasedPoseReachesTheTruePlace) {
 TEST(StateMonitor, ABetterPoseNearbyBlocksLocalizedAndEndsIt) {
     StateParams p;
     p.local_margin = 7.0;
+    p.local_entry_margin = 0;  // entering and staying by local_margin alone
     StateMonitor m(p);
     FitWindow::Fit good{0.9, 10, 1.0, 4};
     good.local_gain = 0.5 * p.local_margin;
@@ -172,6 +173,35 @@ TEST(StateMonitor, ABetterPoseNearbyBlocksLocalizedAndEndsIt) {
     off.local_margin = 0;
     StateMonitor m_off(off);
     for (std::size_t i = 0; i < off.localized_min_updates; ++i) m_off.update(0.95, 0.1, biased, true);
+    EXPECT_EQ(m_off.state(), LocalizationState::Localized);
+}
+
+TEST(StateMonitor, EnteringLocalizedIsStricterThanStayingWithAnEntryMargin) {
+    StateParams p;
+    p.local_margin = 10.0;
+    p.local_entry_margin = 3.0;
+    FitWindow::Fit at_best{0.9, 10, 1.0, 4};
+    at_best.local_gain = 0.5 * p.local_entry_margin;
+    FitWindow::Fit beside = at_best;  // a better pose nearby, by more than the entry margin only
+    beside.local_gain = 0.5 * (p.local_entry_margin + p.local_margin);
+    StateMonitor m(p);
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m.update(0.95, 0.1, beside, true), LocalizationState::Global);
+    for (std::size_t i = 0; i < p.localized_min_updates; ++i) m.update(0.95, 0.1, at_best, true);
+    EXPECT_EQ(m.state(), LocalizationState::Localized);
+    // once localized, the same gain does not end it (hysteresis: local_margin ends it)
+    EXPECT_EQ(m.update(0.95, 0.1, beside, true), LocalizationState::Localized);
+    // the way back from lost is guarded the same way
+    FitWindow::Fit unexplained = at_best;
+    unexplained.recent_fraction = 0.0;
+    EXPECT_EQ(m.update(0.95, 0.1, unexplained, true), LocalizationState::Lost);
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m.update(0.95, 0.1, beside, true), LocalizationState::Lost);
+    for (std::size_t i = 0; i < p.localized_min_updates; ++i) m.update(0.95, 0.1, at_best, true);
+    EXPECT_EQ(m.state(), LocalizationState::Localized);
+    // 0: entering uses local_margin only, so the same fits localize at once
+    StateParams off = p;
+    off.local_entry_margin = 0;
+    StateMonitor m_off(off);
+    for (std::size_t i = 0; i < off.localized_min_updates; ++i) m_off.update(0.95, 0.1, beside, true);
     EXPECT_EQ(m_off.state(), LocalizationState::Localized);
 }
 

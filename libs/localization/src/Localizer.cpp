@@ -397,12 +397,15 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     auto fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
     if (trigger && !m_hypotheses.empty())
         fit.rival_advantage = m_search.rivalAdvantage(m_fit, m_hypotheses, now.asTPose(), m_odometry);
-    if (trigger && m_monitor.state() != LocalizationState::Lost && m_fit.size() >= m_opts.state.fit_min_detections) {
+    // While lost the climb only guards the way back to `localized` (local_entry_margin); the lost
+    // set gets no draws about it (the challenger searches).
+    const bool lost = m_monitor.state() == LocalizationState::Lost;
+    if (trigger && (!lost || m_opts.state.local_entry_margin > 0) && m_fit.size() >= m_opts.state.fit_min_detections) {
         double own = 0;
         const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
         fit.local_gain = best.log_likelihood - own;
         fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
-        if (m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
+        if (!lost && m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
     }
     if (trigger) {
         const auto before = m_monitor.state();

@@ -54,6 +54,11 @@ struct StateParams {
     /// `global`), and [SensorResetting] local_fraction of the particles are drawn about that pose.
     /// 0: off.
     double local_margin = 10.0;
+    /// > 0: entering `localized` (from `global` or `lost`) also needs no pose near the estimate better
+    /// by this (nats): stricter than staying (local_margin), so a set that settles beside the place the
+    /// window prefers is not reported as localized. 0: entering uses local_margin too. While lost the
+    /// climb runs only for this test.
+    double local_entry_margin = 3.0;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.
@@ -122,6 +127,9 @@ class StateMonitor {
    private:
     bool locallyBiased(const FitWindow::Fit& fit) const {
         return m_params.local_margin > 0 && fit.local_gain >= m_params.local_margin;  // false for NaN
+    }
+    bool notYetAtBest(const FitWindow::Fit& fit) const {
+        return m_params.local_entry_margin > 0 && fit.local_gain >= m_params.local_entry_margin;  // false for NaN
     }
     StateParams m_params;
     LocalizationState m_state = LocalizationState::Global;
