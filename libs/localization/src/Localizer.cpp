@@ -405,7 +405,7 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
         fit.local_gain = best.log_likelihood - own;
         fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
-        if (!lost && m_opts.state.local_margin > 0 && fit.local_gain >= m_opts.state.local_margin) m_local_target = best.pose;
+        if (!lost && betterPoseNearby(fit, m_opts.state.local_margin)) m_local_target = best.pose;
     }
     if (trigger) {
         const auto before = m_monitor.state();

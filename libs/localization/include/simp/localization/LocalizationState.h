@@ -112,6 +112,10 @@ class FitWindow {
     std::deque<Item> m_items;
 };
 
+/// The climb found a pose near the estimate that explains the window better by `margin` nats
+/// (false for margin 0 = off, and when the climb did not run: NaN gain).
+inline bool betterPoseNearby(const FitWindow::Fit& fit, double margin) { return margin > 0 && fit.local_gain >= margin; }
+
 /// The state machine: feed it after every filter update.
 class StateMonitor {
    public:
@@ -125,12 +129,6 @@ class StateMonitor {
     LocalizationState state() const { return m_state; }
 
    private:
-    bool locallyBiased(const FitWindow::Fit& fit) const {
-        return m_params.local_margin > 0 && fit.local_gain >= m_params.local_margin;  // false for NaN
-    }
-    bool notYetAtBest(const FitWindow::Fit& fit) const {
-        return m_params.local_entry_margin > 0 && fit.local_gain >= m_params.local_entry_margin;  // false for NaN
-    }
     StateParams m_params;
     LocalizationState m_state = LocalizationState::Global;
     std::size_t m_good_updates = 0;
