@@ -16,7 +16,10 @@ TEST(MappingOptions, DefaultsAreTheAuthors) {
     EXPECT_DOUBLE_EQ(o.filterOf("sink").min_confidence, 0.7);
     EXPECT_DOUBLE_EQ(o.filterOf("board").min_range_m, 1.5);
     EXPECT_DOUBLE_EQ(o.filterOf("cabinet").max_range_m, 5.0);
-    EXPECT_LE(o.filterOf("door").max_range_m, 0.0);  // not mapped by the authors
+    EXPECT_LE(o.filterOf("chair").max_range_m, 0.0);  // not mapped by the authors
+    EXPECT_DOUBLE_EQ(o.filterOf("door").max_range_m, 4.0);  // project: doors are mapped (mapping.ini)
+    EXPECT_DOUBLE_EQ(o.crossRoomMergeRadiusOf("door"), 0.5);
+    EXPECT_DOUBLE_EQ(o.crossRoomMergeRadiusOf("table"), 0.0);
     EXPECT_DOUBLE_EQ(o.filterOf("unknown thing").min_confidence, o.default_filter.min_confidence);
 }
 

@@ -273,6 +273,44 @@ TEST(ObjectMapBuilder, DetectionInAnotherRoomDoesNotTouchThatRoom) {
     EXPECT_EQ(detections_in_map, 6);
 }
 
+TEST(ObjectMapBuilder, AClassListedForCrossRoomMergeIsOneObjectFromBothSidesOfItsDoorway) {
+    // Rooms: x < 5 and x > 5, doorway at y in [2.6, 3.4]. A thin "cabinet" (standing for a door)
+    // stands in the doorway and was mapped twice, once from each room, its two faces 0.2 m apart;
+    // the robot is in the left room. Two other cabinets hang back to back on the wall 0.3 m apart.
+    const auto grid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);
+    auto m0 = emptyMap();
+    m0.objects = {mapObject(1, 1, makeUprightBox({4.9, 3.0, 1.0}, {0.05, 0.8, 2.0}, 0.0), 30),
+                  mapObject(2, 1, makeUprightBox({5.1, 3.0, 1.0}, {0.05, 0.8, 2.0}, 0.0), 10),
+                  mapObject(3, 1, makeUprightBox({4.85, 1.0, 1.0}, {0.05, 0.8, 0.6}, 0.0), 20),
+                  mapObject(4, 1, makeUprightBox({5.15, 1.0, 1.0}, {0.05, 0.8, 0.6}, 0.0), 20)};
+    const mrpt::poses::CPose3D pose(2.0, 3.0, 0, 0, 0, 0);
+    auto run = [&](std::map<std::string, double> radius) {
+        auto opts = test::testOptions();
+        opts.class_cross_room_merge_radius_m = std::move(radius);
+        ObjectMapBuilder b(opts);
+        b.setFloorPlan(grid, {});
+        b.setMap(m0);
+        std::mt19937 rng(3);
+        insertAll(b, test::observe({}, kClasses, pose, rng), pose);
+        b.flush();
+        return b;
+    };
+    const ObjectMapBuilder authors = run({});
+    ASSERT_NE(authors.roomOf(4.9, 3.0), authors.roomOf(5.1, 3.0));
+    EXPECT_EQ(authors.map().objects.size(), 4u);  // the room rule keeps each room's copy
+    // Listed with 0.5 m: the doorway's copies merge (weighted by their matches: 30 : 10); the
+    // back-to-back pair 0.3 m apart merges too (the rule is by class: list only classes that stand
+    // between rooms); a radius under their distance keeps both pairs.
+    const ObjectMapBuilder merged = run({{"cabinet", 0.5}});
+    ASSERT_EQ(merged.map().objects.size(), 2u);
+    const auto* door = closest(merged.map(), 1, {5.0, 3.0, 1.0});
+    ASSERT_NE(door, nullptr);
+    EXPECT_EQ(door->n_match, 40);
+    EXPECT_NEAR(door->box.center.x(), 4.95, 1e-6);
+    EXPECT_EQ(run({{"cabinet", 0.19}}).map().objects.size(), 4u);
+    EXPECT_EQ(run({{"table", 0.5}}).map().objects.size(), 4u);  // another class listed
+}
+
 TEST(ObjectMapBuilder, FiltersDetectionsByClassConfidenceAndRange) {
     auto opts = test::testOptions();
     opts.per_class["chair"] = ClassFilter{0.5, 0.0, 0.0};  // disabled

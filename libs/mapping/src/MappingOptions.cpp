@@ -11,13 +11,14 @@ namespace {
 using io::ValueRange;
 using O = MappingOptions;
 
-// The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist).
+// The authors' mapping_args.json (categories, omni_conf, min_dist, max_dist), but for doors: the
+// authors do not map them (0, 0, 0); the project does (config_ini/mapping.ini says why).
 struct AuthorsRow {
     const char* name;
     double conf, min_dist, max_dist;
 };
 constexpr AuthorsRow kAuthorsFilters[] = {
-    {"sink", 0.7, 0.5, 3.0},     {"door", 0.0, 0.0, 0.0},         {"oven", 0.8, 0.0, 4.0},
+    {"sink", 0.7, 0.5, 3.0},     {"door", 0.7, 0.5, 4.0},         {"oven", 0.8, 0.0, 4.0},
     {"board", 0.9, 1.5, 4.5},    {"table", 0.7, 1.0, 4.5},        {"box", 0.0, 0.0, 0.0},
     {"potted plant", 0.95, 0.0, 4.5}, {"drawers", 0.8, 0.0, 3.5}, {"sofa", 0.7, 0.5, 3.0},
     {"cabinet", 0.9, 1.0, 5.0},  {"chair", 0.0, 0.0, 0.0},        {"fire extinguisher", 0.9, 0.0, 3.0},
@@ -95,6 +96,11 @@ double MappingOptions::duplicateCenterRadiusOf(const std::string& class_name) co
     return it == class_duplicate_center_radius_m.end() ? duplicate_center_radius_m : it->second;
 }
 
+double MappingOptions::crossRoomMergeRadiusOf(const std::string& class_name) const {
+    const auto it = class_cross_room_merge_radius_m.find(class_name);
+    return it == class_cross_room_merge_radius_m.end() ? 0.0 : it->second;
+}
+
 std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::string& class_name) const {
     const auto it = class_wall_align_max_gap_m.find(class_name);
     if (wall_align == WallAlignMode::Off || it == class_wall_align_max_gap_m.end()) return std::nullopt;
@@ -133,6 +139,8 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .flag("hide_objects_in_walls", &O::hide_objects_in_walls, "project addition: on a walls-only plan, objects centred in a wall or outside are not written (\"Output: confirmed objects\")");
         classMap(t, "class_duplicate_center_radius_m", &O::class_duplicate_center_radius_m, "m", between(0, 1e3),
                  "authors' `centerMerge`");
+        classMap(t, "class_cross_room_merge_radius_m", &O::class_cross_room_merge_radius_m, "m", between(0, 1e3),
+                 "project rule: same-class objects of different rooms closer than this are one object (doors seen from both sides)");
         t.choice("wall_align", &O::wall_align,
                  std::vector<std::pair<std::string, WallAlignMode>>{{"auto", WallAlignMode::Auto}, {"true", WallAlignMode::On},
                                                                     {"on", WallAlignMode::On},     {"1", WallAlignMode::On},
@@ -201,9 +209,9 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
                     std::vector<std::pair<std::string, RoomUpdatePolicy>>{{"current_room", RoomUpdatePolicy::CurrentRoom},
                                                                           {"all", RoomUpdatePolicy::All}},
                     "`current_room` (paper): only objects and detections of the robot's room; `all`: no room filter");
-        classFilter(t, "class_min_confidence", &ClassFilter::min_confidence, "", between(0, 1), "authors' `omni_conf`");
-        classFilter(t, "class_min_range_m", &ClassFilter::min_range_m, "m", between(0, 1e4), "authors' `min_dist`");
-        classFilter(t, "class_max_range_m", &ClassFilter::max_range_m, "m", between(0, 1e4), "authors' `max_dist`; 0 disables the class (authors: door, box, chair, person)");
+        classFilter(t, "class_min_confidence", &ClassFilter::min_confidence, "", between(0, 1), "authors' `omni_conf` (door: project, see mapping.ini)");
+        classFilter(t, "class_min_range_m", &ClassFilter::min_range_m, "m", between(0, 1e4), "authors' `min_dist` (door: project)");
+        classFilter(t, "class_max_range_m", &ClassFilter::max_range_m, "m", between(0, 1e4), "authors' `max_dist`; 0 disables the class (authors: door, box, chair, person; the project maps doors)");
         t.rule("update_min_move_m", [](const O& o) { return o.update_min_move_m <= o.update_move_max_distance_m; },
                "not exceed update_move_max_distance_m");
         return t;

@@ -148,17 +148,30 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
             for (std::size_t b = a + 1; b < idx.size(); ++b) {
                 const std::size_t i = idx[a], j = idx[b];
                 if (removed[i] || removed[j] || m_g.objects[i].class_id != m_g.objects[j].class_id) continue;
-                std::size_t r = m_g.objects[i].n_match >= m_g.objects[j].n_match ? i : j;
+                // A class mapped from two rooms (a door): its copies in different rooms are one
+                // object within the class's cross-room radius, whatever the duplicate rules say.
+                const world::MapObject &oi = m_g.objects[i], &oj = m_g.objects[j];
+                const double cross_radius = m_options.crossRoomMergeRadiusOf(m_g.class_names[oi.class_id]);
+                const bool cross_room = cross_radius > 0 && oi.room_id != 0 && oj.room_id != 0 && oi.room_id != oj.room_id;
+                std::size_t r = oi.n_match >= oj.n_match ? i : j;
                 if (m_earlier_session) {
-                    const bool gi = isGivenObject(m_g.objects[i].id), gj = isGivenObject(m_g.objects[j].id);
+                    const bool gi = isGivenObject(oi.id), gj = isGivenObject(oj.id);
                     // An earlier object this session has not matched may have been moved: the new
-                    // object near it is its candidate new place, not its twin (MapUpdate.h).
-                    if (gi != gj && evidenceOf(m_g.objects[gi ? i : j].id).windows_matched == 0) continue;
+                    // object near it is its candidate new place, not its twin (MapUpdate.h). Not so
+                    // for a copy seen from the other room: the earlier object was out of that room.
+                    if (!cross_room && gi != gj && evidenceOf(m_g.objects[gi ? i : j].id).windows_matched == 0) continue;
                     if (gi != gj) r = gi ? i : j;  // the earlier object keeps its id
                 }
                 const std::size_t o = r == i ? j : i;
                 const world::MapObject& ref = m_g.objects[r];
-                const double c = duplicateCost(ref.box, objectDistribution(ref, ref.box), ref.class_id, m_g.objects[o].box);
+                const world::MapObject& other = m_g.objects[o];
+                double c = 0;
+                if (cross_room) {
+                    if ((ref.box.center - other.box.center).head<2>().norm() >= cross_radius) continue;
+                    c = associationCost(ref.box, objectDistribution(ref, ref.box), other.box);
+                } else {
+                    c = duplicateCost(ref.box, objectDistribution(ref, ref.box), ref.class_id, other.box);
+                }
                 if (c < best) best = c, keep = r, drop = o;
             }
         if (best >= kNotDuplicate) break;
@@ -347,7 +360,9 @@ void ObjectMapBuilder::flush() {
         for (const auto& o : added) seen.insert(o.id);
         const bool all_rooms = m_options.room_policy == RoomUpdatePolicy::All;
         for (const auto& o : m_g.objects)
-            if (all_rooms || (m_window_room != 0 && o.room_id == m_window_room)) seen.insert(o.id);
+            if (all_rooms || (m_window_room != 0 && o.room_id == m_window_room) ||
+                m_options.crossRoomMergeRadiusOf(m_g.class_names[o.class_id]) > 0)
+                seen.insert(o.id);
         m_stats.duplicates_merged += mergeMapDuplicates(seen);
     }
 

@@ -11,6 +11,12 @@ const std::vector<std::string>& defaultClassNames() {
     return names;
 }
 
+const std::vector<std::string>& tableIClassNames() {
+    static const std::vector<std::string> names = {"board", "cabinet", "desk",  "drawers", "fire extinguisher",
+                                                   "oven",  "potted plant", "sink", "sofa",   "table"};
+    return names;
+}
+
 int classIndexOf(const std::vector<std::string>& names, const std::string& name) {
     const auto it = std::find(names.begin(), names.end(), name);
     return it == names.end() ? -1 : static_cast<int>(it - names.begin());

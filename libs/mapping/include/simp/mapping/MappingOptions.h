@@ -77,6 +77,13 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double duplicate_min_overlap = 0.2;
     /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
     double duplicateCenterRadiusOf(const std::string& class_name) const;
+    /// Project rule: objects of a listed class stand between two rooms (a door in its doorway) and
+    /// are mapped from both sides, each side's copy in its own room, where the room rule keeps them
+    /// apart. Same-class objects of different rooms whose centres are closer than the class's value
+    /// (m) are one object. Empty (the authors): objects of other rooms never merge.
+    std::map<std::string, double> class_cross_room_merge_radius_m{{"door", 0.5}};
+    /// Cross-room merge radius of a class (m); 0 when not listed.
+    double crossRoomMergeRadiusOf(const std::string& class_name) const;
     /// @}
     /// I_active: do intersecting map boxes occlude each other? false: boxes that intersect in 3D
     /// are treated as one group that does not hide itself (duplicates become active, get n_skip
