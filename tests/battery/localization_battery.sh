@@ -19,6 +19,7 @@ DURATION=${DURATION:-120}
 PARTICLES=${PARTICLES:-5000}
 JOBS=${JOBS:-2}
 BUILT=${BUILT:-0}
+MAPPING=${MAPPING:-config_ini/mapping.ini}  # the [mapping] config of the BUILT maps
 AUTHORS=${AUTHORS:-../shared/data/simp-office}
 mkdir -p "$OUT"
 worlds=()
@@ -56,7 +57,7 @@ for w in "${worlds[@]}"; do
   maps=("GT:$W")
   if [ "$BUILT" = 1 ]; then
     C="$OUT/cov_$w"; M="$OUT/m_$w"
-    [ -f "$C/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed 900 --out $C --duration 1200 --coverage >/dev/null 2>&1 && $B/simp-map --world $W --rawlog $C/sequence.rawlog --poses $C/groundtruth.tum --out $M --config config_ini/mapping.ini >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
+    [ -f "$C/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed 900 --out $C --duration 1200 --coverage >/dev/null 2>&1 && $B/simp-map --world $W --rawlog $C/sequence.rawlog --poses $C/groundtruth.tum --out $M --config $MAPPING >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
     maps+=("BUILT:$M")
   fi
   for cfg in "${CONFIGS[@]}"; do
