@@ -1,7 +1,6 @@
 // TUM reader on broken and hostile files: errors name the file and the line.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <simp/io/NameValueList.h>
 #include <simp/io/Tum.h>
 
 #include <filesystem>
@@ -42,14 +41,4 @@ TEST(TumHostile, AbsurdCoordinatesAndTimesAreRejected) {
 TEST(TumHostile, EmptyFileGivesNoPoses) {
     EXPECT_TRUE(simp::io::readTum(tumFile("empty.tum", "")).empty());
     EXPECT_TRUE(simp::io::readTum(tumFile("comments.tum", "# t x y z qx qy qz qw\n\n")).empty());
-}
-
-TEST(NameValueListHostile, OverflowAndGarbageNameTheEntry) {
-    EXPECT_THROW(simp::io::parseNameValueList("chair:1e400", "[x] key"), std::invalid_argument);
-    try {
-        simp::io::parseNameValueList("chair:abc", "[x] key");
-        FAIL();
-    } catch (const std::invalid_argument& e) {
-        EXPECT_THAT(e.what(), HasSubstr("[x] key: entry 'chair:abc'"));
-    }
 }

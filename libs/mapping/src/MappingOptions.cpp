@@ -92,13 +92,11 @@ const ClassFilter& MappingOptions::filterOf(const std::string& class_name) const
 }
 
 double MappingOptions::duplicateCenterRadiusOf(const std::string& class_name) const {
-    const auto it = class_duplicate_center_radius_m.find(class_name);
-    return it == class_duplicate_center_radius_m.end() ? duplicate_center_radius_m : it->second;
+    return io::valueOr(class_duplicate_center_radius_m, class_name, duplicate_center_radius_m);
 }
 
 double MappingOptions::crossRoomMergeRadiusOf(const std::string& class_name) const {
-    const auto it = class_cross_room_merge_radius_m.find(class_name);
-    return it == class_cross_room_merge_radius_m.end() ? 0.0 : it->second;
+    return io::valueOr(class_cross_room_merge_radius_m, class_name, 0.0);
 }
 
 std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::string& class_name) const {

@@ -1,4 +1,5 @@
 #include <mrpt/config/CConfigFileBase.h>
+#include <simp/io/NameValueList.h>
 #include <simp/io/StrictIni.h>
 #include <simp/maps/CObjectMap.h>
 
@@ -64,8 +65,7 @@ void CObjectMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CCon
 void CObjectMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const { table().dump(*this, out); }
 
 double CObjectMap::TLikelihoodOptions::thresholdOf(const std::string& class_name) const {
-    const auto it = confidence_thresholds.find(class_name);
-    return it == confidence_thresholds.end() ? default_confidence_threshold : it->second;
+    return io::valueOr(confidence_thresholds, class_name, default_confidence_threshold);
 }
 
 SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
