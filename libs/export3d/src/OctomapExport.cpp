@@ -21,9 +21,9 @@ namespace simp::export3d {
 namespace {
 
 /// MRPT's cell value is the probability of the cell being free; the world's floorplan.png
-/// thresholds (occupancy >= 0.65 occupied, <= 0.196 free) as free probabilities.
-constexpr float kWallMaxFree = 0.35f;
-constexpr float kFreeMinFree = 0.804f;
+/// thresholds (world::kWrittenOccupiedThresh, kWrittenFreeThresh) as free probabilities.
+constexpr float kWallMaxFree = static_cast<float>(1.0 - world::kWrittenOccupiedThresh);
+constexpr float kFreeMinFree = static_cast<float>(1.0 - world::kWrittenFreeThresh);
 constexpr std::array<std::uint8_t, 3> kWallColour{160, 160, 160};
 
 enum class Kind { Free, Wall, Object };

@@ -165,7 +165,9 @@ void saveRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& 
     for (unsigned cy = 0; cy < rows; ++cy)
         for (unsigned cx = 0; cx < cols; ++cx) {
             const float occ = 1.0f - grid.getCell(static_cast<int>(cx), static_cast<int>(cy));  // MRPT stores P(free)
-            const uchar v = occ >= 0.65f ? 0 : (occ <= 0.196f ? 254 : 205);
+            const uchar v = occ >= static_cast<float>(kWrittenOccupiedThresh)
+                                ? 0
+                                : (occ <= static_cast<float>(kWrittenFreeThresh) ? 254 : 205);
             img(static_cast<int>(rows - 1 - cy), static_cast<int>(cx)) = v;
         }
     if (!cv::imwrite(png.string(), img)) fail(png.string(), "cannot write the image");
@@ -175,8 +177,8 @@ void saveRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& 
         << "resolution: " << floatText(grid.getResolution()) << "\n"
         << "origin: [" << floatText(grid.getXMin()) << ", " << floatText(grid.getYMin()) << ", 0.0]\n"
         << "negate: 0\n"
-        << "occupied_thresh: 0.65\n"
-        << "free_thresh: 0.196\n";
+        << "occupied_thresh: " << kWrittenOccupiedThresh << "\n"
+        << "free_thresh: " << kWrittenFreeThresh << "\n";
     if (!out) fail(yaml_path, "write failed");
 }
 

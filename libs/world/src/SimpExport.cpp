@@ -6,6 +6,7 @@
 #include <simp/world/JsonRead.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/SimpPixels.h>
+#include <simp/world/World.h>
 
 #include <algorithm>
 #include <charconv>
@@ -165,7 +166,7 @@ void exportSimpMap(const World& world, const std::string& dir) {
     fc["roomSeg"] = "roomseg.png";
     fc["map"] = ojson::array({ojson{{"type", "GMap"}, {"image", "Map.png"}, {"resolution", px.resolution_m},
                                     {"origin", {px.origin_x_m, px.origin_y_m, 0.0}}, {"negate", 0},
-                                    {"occupied_thresh", 0.65}, {"free_thresh", 0.196}, {"augment", 0}}});
+                                    {"occupied_thresh", kWrittenOccupiedThresh}, {"free_thresh", kWrittenFreeThresh}, {"augment", 0}}});
     fc["semantic"] = ojson{{"classes", d.class_names}, {"categories", categories}};
     ojson jrooms = ojson::array();
     for (const auto& [id, r] : rooms) {

@@ -36,6 +36,12 @@ struct World {
     ObjectMapData objects;
 };
 
+/// The occupancy thresholds of the floor plans the project writes (floorplan.yaml, the authors'
+/// Map.png entry; map_server's defaults): occupancy >= this is occupied ...
+inline constexpr double kWrittenOccupiedThresh = 0.65;
+/// ... and occupancy <= this is free; between them unknown.
+inline constexpr double kWrittenFreeThresh = 0.196;
+
 /// The keys of a ROS map_server yaml file (http://wiki.ros.org/map_server#YAML_format).
 struct RosMapYaml {
     std::string image_path;        ///< resolved: relative paths are relative to the yaml's folder
@@ -43,8 +49,8 @@ struct RosMapYaml {
     double origin_x_m = 0, origin_y_m = 0;  ///< world pose of the bottom-left corner of the image
     double origin_yaw_rad = 0;     ///< must be 0 (MRPT grids are axis-aligned)
     bool negate = false;
-    double occupied_thresh = 0.65;
-    double free_thresh = 0.196;
+    double occupied_thresh = kWrittenOccupiedThresh;
+    double free_thresh = kWrittenFreeThresh;
     std::string mode = "trinary";  ///< "trinary" or "scale" ("raw" is rejected)
 };
 
