@@ -9,6 +9,7 @@
 #include <simp/obs/InputLimits.h>
 #include <simp/world/ImageLimits.h>
 #include <simp/world/World.h>
+#include <simp/world/YamlText.h>
 
 #include <charconv>
 #include <cmath>
@@ -58,9 +59,10 @@ struct GridExtentAccess : mrpt::maps::COccupancyGridMap2D {
 
 RosMapYaml readRosMapYaml(const std::string& yaml_path) {
     if (!std::filesystem::exists(yaml_path)) fail(yaml_path, "file not found");
+    const std::string text = readYamlText(yaml_path);  // before libfyaml: YamlText.h
     mrpt::containers::yaml y;
     try {
-        y = mrpt::containers::yaml::FromFile(yaml_path);
+        y = mrpt::containers::yaml::FromText(text);
     } catch (const std::exception& e) {
         fail(yaml_path, std::string("invalid YAML: ") + e.what());
     }
