@@ -44,11 +44,11 @@ TEST(CObjectMap, RawLogViewersRawMapDialogDrawsTheBuiltBoxes) {
     const auto object_map = the_map.mapByClass<CObjectMap>();
     ASSERT_TRUE(object_map);
 
-    const auto gt = test::smallMap();
+    const auto gt = simp::maps::test::smallMap();
     const mrpt::math::TPose2D truth(1.0, 0.5, 0.4);
     mrpt::obs::CSensoryFrame sf;
-    sf.insert(std::make_shared<simp::obs::CObservationObjects3D>(test::detect(gt, truth, {1, 2}, 0.95f)));
-    for (int k = 0; k < 2; ++k) sf.insertObservationsInto(the_map, test::pose3D(truth));
+    sf.insert(std::make_shared<simp::obs::CObservationObjects3D>(simp::maps::test::detect(gt, truth, {1, 2}, 0.95f)));
+    for (int k = 0; k < 2; ++k) sf.insertObservationsInto(the_map, simp::maps::test::pose3D(truth));
     object_map->flushInsertions();  // the dialog's odometry moves the robot, which integrates as it goes
     ASSERT_EQ(object_map->size(), 2u);
 

@@ -15,10 +15,9 @@ namespace simp::eval {
 namespace {
 
 using L = BatchFigureLayout;
-const cv::Scalar kBlack = toBgr(obs::figure_colors::kText), kGrid = toBgr(obs::figure_colors::kGrid);
 
 void text(cv::Mat3b& img, const std::string& s, cv::Point at, double scale = 0.45) {
-    cv::putText(img, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, kBlack, 1, cv::LINE_AA);
+    cv::putText(img, s, at, cv::FONT_HERSHEY_SIMPLEX, scale, kTextBgr, 1, cv::LINE_AA);
 }
 
 /// Frame, horizontal grid lines with their values (y in [0, y_max]) and the axis labels: the y
@@ -27,10 +26,10 @@ void drawAxes(cv::Mat3b& img, const cv::Rect& area, double y_max, int y_decimals
               const std::string& x_label) {
     for (int k = 0; k <= 4; ++k) {
         const int y = area.y + area.height - area.height * k / 4;
-        if (k > 0 && k < 4) cv::line(img, {area.x, y}, {area.x + area.width, y}, kGrid, 1);
+        if (k > 0 && k < 4) cv::line(img, {area.x, y}, {area.x + area.width, y}, kGridBgr, 1);
         text(img, fmt(y_max * k / 4, y_decimals), {area.x - 50, y + 4}, 0.4);
     }
-    cv::rectangle(img, area, kBlack, 1);
+    cv::rectangle(img, area, kTextBgr, 1);
     text(img, y_label, {area.x - 50, area.y - 10}, 0.5);
     text(img, x_label, {area.x + area.width / 2 - 60, area.y + area.height + 40}, 0.5);
 }
@@ -126,7 +125,7 @@ cv::Mat3b drawErrorOverTimeFigure(const BatchSummary& s, const std::vector<RunEr
         };
         for (int x = area.x; x < area.x + area.width; x += 12)  // the convergence bound, dashed
             cv::line(img, {x, px(0, max_trans_m).y}, {std::min(x + 6, area.x + area.width), px(0, max_trans_m).y},
-                     kBlack, 1);
+                     kTextBgr, 1);
         for (const auto& r : runs) {
             if (r.row != row) continue;
             std::vector<cv::Point> pts;
@@ -138,7 +137,7 @@ cv::Mat3b drawErrorOverTimeFigure(const BatchSummary& s, const std::vector<RunEr
     std::vector<LegendItem> legend;
     for (std::size_t q = 0; q < s.sequences.size(); ++q)
         legend.emplace_back("sequence " + s.sequences[q], seriesColor(q));
-    legend.emplace_back("bound " + fmt(max_trans_m, 2) + " m (dashed)", kBlack);
+    legend.emplace_back("bound " + fmt(max_trans_m, 2) + " m (dashed)", kTextBgr);
     return withLegend(img, legend);
 }
 

@@ -18,8 +18,7 @@ namespace {
 namespace fc = obs::figure_colors;
 const cv::Scalar kLifted = toBgr(fc::kKidnapLifted), kPutDown = toBgr(fc::kKidnapPutDown), kParticles = toBgr(fc::kParticles),
                  kGt = toBgr(fc::kGroundTruth), kEstBefore = toBgr(fc::kEstimateBefore), kEstAfter = toBgr(fc::kEstimate),
-                 kConv = toBgr(fc::kConvergence), kDiv = toBgr(fc::kDivergence), kBlack = toBgr(fc::kText),
-                 kGrid = toBgr(fc::kGrid);
+                 kConv = toBgr(fc::kConvergence), kDiv = toBgr(fc::kDivergence);
 
 /// One error panel: values over time, a dashed bound, vertical event lines.
 void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, double bound, double y_max,
@@ -29,24 +28,24 @@ void drawPanel(cv::Mat3b& img, const cv::Rect& area, const TrajMetrics& m, doubl
         const double u = std::clamp(t / t_max, 0.0, 1.0), w = std::clamp(v / y_max, 0.0, 1.0);
         return cv::Point(area.x + static_cast<int>(u * area.width), area.y + area.height - static_cast<int>(w * area.height));
     };
-    cv::rectangle(img, area, kBlack, 1);
+    cv::rectangle(img, area, kTextBgr, 1);
     for (int k = 1; k < 4; ++k) {  // y grid
         const double v = y_max * k / 4;
-        cv::line(img, px(0, v), px(t_max, v), kGrid, 1);
-        cv::putText(img, fmt(v, 2), {area.x - 44, px(0, v).y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
+        cv::line(img, px(0, v), px(t_max, v), kGridBgr, 1);
+        cv::putText(img, fmt(v, 2), {area.x - 44, px(0, v).y + 4}, cv::FONT_HERSHEY_SIMPLEX, 0.38, kTextBgr, 1, cv::LINE_AA);
     }
     for (double f = 0; f <= 1.0001; f += 0.25)  // time ticks
         cv::putText(img, fmt(f * m.duration_s, m.duration_s < 20 ? 1 : 0), {px(f * t_max, 0).x - 8, area.y + area.height + 14},
-                    cv::FONT_HERSHEY_SIMPLEX, 0.38, kBlack, 1, cv::LINE_AA);
+                    cv::FONT_HERSHEY_SIMPLEX, 0.38, kTextBgr, 1, cv::LINE_AA);
     for (int x = area.x; x < area.x + area.width; x += 12)  // dashed bound
-        cv::line(img, {x, px(0, bound).y}, {std::min(x + 6, area.x + area.width), px(0, bound).y}, kBlack, 1);
+        cv::line(img, {x, px(0, bound).y}, {std::min(x + 6, area.x + area.width), px(0, bound).y}, kTextBgr, 1);
     std::vector<cv::Point> pts;
     for (const auto& s : m.errors) pts.push_back(px(s.t_s - m.start_s, translation ? s.trans_m : s.rot_rad));
     if (pts.size() > 1) cv::polylines(img, pts, false, kEstAfter, 1, cv::LINE_AA);
     if (m.convergence_time_s) cv::line(img, px(*m.convergence_time_s, 0), px(*m.convergence_time_s, y_max), kConv, 2);
     if (m.divergence_time_s)
         cv::line(img, px(*m.divergence_time_s, 0), px(*m.divergence_time_s, y_max), kDiv, 2);
-    cv::putText(img, label, {area.x, area.y - 5}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kBlack, 1, cv::LINE_AA);
+    cv::putText(img, label, {area.x, area.y - 5}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kTextBgr, 1, cv::LINE_AA);
 }
 
 }  // namespace
@@ -67,7 +66,7 @@ cv::Mat3b drawErrorPlot(const TrajMetrics& m, const TrajMetricsParams& p, int wi
     if (m.convergence_time_s) status += "   converged at " + fmt(*m.convergence_time_s, 1) + " s (blue)";
     if (m.divergence_time_s) status += "   diverged at " + fmt(*m.divergence_time_s, 1) + " s (red)";
     status += m.success ? "   success" : "   failure";
-    cv::putText(img, status, {left, height - 6}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kBlack, 1, cv::LINE_AA);
+    cv::putText(img, status, {left, height - 6}, cv::FONT_HERSHEY_SIMPLEX, 0.45, kTextBgr, 1, cv::LINE_AA);
     return img;
 }
 

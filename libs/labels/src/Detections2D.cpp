@@ -1,6 +1,7 @@
 /// \file Detections2D.cpp
 #include "JsonUtil.h"
 
+#include <simp/io/NameValueList.h>
 #include <simp/io/StrictNumber.h>
 #include <simp/labels/Detections2D.h>
 
@@ -13,12 +14,6 @@
 namespace simp::labels {
 
 namespace {
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\"");
-    if (b == std::string::npos) return "";
-    return s.substr(b, s.find_last_not_of(" \t\r\"") - b + 1);
-}
 
 void check(const Detection2D& d, const std::vector<std::string>& names, const std::string& file, const std::string& where) {
     if (std::find(names.begin(), names.end(), d.class_name) == names.end())
@@ -35,11 +30,11 @@ std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std:
     std::size_t n = 0;
     while (std::getline(in, line)) {
         ++n;
-        const std::string t = trim(line);
+        const std::string t = io::trimIniValue(line);
         if (t.empty() || t[0] == '#' || (n == 1 && t.rfind("image_id", 0) == 0)) continue;
         std::vector<std::string> f;
         std::stringstream ss(t);
-        for (std::string c; std::getline(ss, c, ',');) f.push_back(trim(c));
+        for (std::string c; std::getline(ss, c, ',');) f.push_back(io::trimIniValue(c));
         const std::string where = "line " + std::to_string(n);
         if (f.size() != 7)
             world::failAt(path, where, "wrong column count " + std::to_string(f.size()) +

@@ -21,14 +21,14 @@ namespace {
     throw std::runtime_error(file + ": line " + std::to_string(line) + ": " + what);
 }
 
-std::string trim(const std::string& s) {
+std::string trimBlanks(const std::string& s) {
     const auto b = s.find_first_not_of(" \t\r");
     if (b == std::string::npos) return "";
     return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
 double toNumber(const std::string& field, const std::string& file, std::size_t line, std::size_t column) {
-    const std::string f = trim(field);
+    const std::string f = trimBlanks(field);
     const auto x = io::parseFiniteNumber(f);
     if (!x) failAt(file, line, "column " + std::to_string(column) + ": expected a finite number, got '" + f + "'");
     return *x;
@@ -47,7 +47,7 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
     std::size_t line_no = 0;
     while (std::getline(in, raw)) {
         ++line_no;
-        const std::string line = trim(raw);
+        const std::string line = trimBlanks(raw);
         if (line.empty() || line[0] == '#' || (line_no == 1 && line.rfind("timestamp", 0) == 0)) continue;
         std::vector<std::string> f;
         std::stringstream ss(line);
@@ -59,7 +59,7 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
         DetectionImage im;
         im.id = static_cast<std::int64_t>(set.images.size());
         im.timestamp_s = toNumber(f[0], path, line_no, 1);
-        const std::string cam = trim(f[1]);
+        const std::string cam = trimBlanks(f[1]);
         if (rig.indexOf(cam) >= 0) {
             im.camera = cam;
         } else {
@@ -79,7 +79,7 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
             d.confidence = static_cast<float>(toNumber(f[base + 24], path, line_no, base + 25));
             const double cls = toNumber(f[base + 25], path, line_no, base + 26);
             if (cls < 0 || std::floor(cls) != cls || cls >= static_cast<double>(class_names.size()))
-                failAt(path, line_no, "column " + std::to_string(base + 26) + ": unknown class " + trim(f[base + 25]) +
+                failAt(path, line_no, "column " + std::to_string(base + 26) + ": unknown class " + trimBlanks(f[base + 25]) +
                                           " (expected an id 0.." + std::to_string(class_names.size() - 1) + ")");
             d.class_id = static_cast<std::uint16_t>(cls);
             try {

@@ -9,9 +9,6 @@ constexpr const char* kExperiment = "LocalizationExperiment";
 constexpr const char* kMotion = "MotionModel";
 
 using io::ValueRange;
-const ValueRange kNonNegative = ValueRange::atLeast(0);
-const ValueRange kFraction = ValueRange::between(0, 1);
-const ValueRange kCount = ValueRange::between(1, 1e6);
 
 }  // namespace
 
@@ -28,14 +25,14 @@ const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
             .number("free_cells_threshold", &O::free_cells_threshold, "", ValueRange::aboveUpTo(0, 1),
                     "free cell: p_free >= this (camera::floorplan::kParticleMinFree)")
             .flag("prune_outside_free_space", &O::prune_outside_free_space, "redraw particles moved off the free space")
-            .number("update_min_d_xy", &O::update_min_d_xy, "m", kNonNegative, "motion that triggers an update (the paper's d_xy; 0 = every frame)")
-            .number("update_min_d_phi", &O::update_min_d_phi, "rad", kNonNegative, "rotation that triggers an update (the paper's d_theta; 0 = every frame)")
+            .number("update_min_d_xy", &O::update_min_d_xy, "m", ValueRange::nonNegative(), "motion that triggers an update (the paper's d_xy; 0 = every frame)")
+            .number("update_min_d_phi", &O::update_min_d_phi, "rad", ValueRange::nonNegative(), "rotation that triggers an update (the paper's d_theta; 0 = every frame)")
             .flag("keep_skipped_detections", &O::keep_skipped_detections, "use the detections of the skipped frames at the next update")
             .flag("prune_keeps_weight", &O::prune_keeps_weight, "false: a pruned particle gets the smallest weight MRPT keeps (max log-weight - `max_loglikelihood_dyn_range`); "
                   "true: it keeps its weight (authors' code, simp-paper.ini)")
             .flag("singw_per_frame", &O::singw_per_frame, "Eq. singw per camera frame (time stamp), multiplied over the frames of an update; false = one geometric mean over the update")
-            .number("recovery_alpha_slow", &O::recovery_alpha_slow, "", kFraction, "augmented-MCL long-term rate (0 = no recovery)")
-            .number("recovery_alpha_fast", &O::recovery_alpha_fast, "", kFraction, "augmented-MCL short-term rate, > `recovery_alpha_slow` when not 0")
+            .number("recovery_alpha_slow", &O::recovery_alpha_slow, "", ValueRange::fraction(), "augmented-MCL long-term rate (0 = no recovery)")
+            .number("recovery_alpha_fast", &O::recovery_alpha_fast, "", ValueRange::fraction(), "augmented-MCL short-term rate, > `recovery_alpha_slow` when not 0")
             .choice("estimate_mode", &O::estimate_mode,
                     std::vector<std::pair<std::string, EstimateMode>>{{"cluster", EstimateMode::Cluster}, {"mean", EstimateMode::Mean}},
                     "`estimate.tum`: mean of the highest-weight cluster, or of all particles")
@@ -71,19 +68,19 @@ const io::OptionTable<MotionModelOptions>& MotionModelOptions::table() {
             .choice("modelSelection", [](auto& o) -> auto& { return o.mrpt_options.modelSelection; },
                     std::vector<std::pair<std::string, M::TDrawSampleMotionModel>>{{"gaussian", M::mmGaussian}, {"thrun", M::mmThrun}},
                     "MRPT's odometry noise model")
-            .number("a1", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a1; }, "m/m", kNonNegative, "gaussian: translation std per metre")
-            .number("a2", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a2; }, "m/rad", kNonNegative, "gaussian: translation std per radian")
-            .number("a3", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a3; }, "rad/m", kNonNegative, "gaussian: rotation std per metre")
-            .number("a4", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a4; }, "rad/rad", kNonNegative, "gaussian: rotation std per radian")
-            .number("minStdXY", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.minStdXY; }, "m", kNonNegative, "gaussian: least translation std")
-            .number("minStdPHI", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.minStdPHI; }, "rad", kNonNegative, "gaussian: least rotation std")
+            .number("a1", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a1; }, "m/m", ValueRange::nonNegative(), "gaussian: translation std per metre")
+            .number("a2", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a2; }, "m/rad", ValueRange::nonNegative(), "gaussian: translation std per radian")
+            .number("a3", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a3; }, "rad/m", ValueRange::nonNegative(), "gaussian: rotation std per metre")
+            .number("a4", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.a4; }, "rad/rad", ValueRange::nonNegative(), "gaussian: rotation std per radian")
+            .number("minStdXY", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.minStdXY; }, "m", ValueRange::nonNegative(), "gaussian: least translation std")
+            .number("minStdPHI", [](auto& o) -> auto& { return o.mrpt_options.gaussianModel.minStdPHI; }, "rad", ValueRange::nonNegative(), "gaussian: least rotation std")
             .integer("nParticlesCount", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.nParticlesCount; }, ValueRange::atLeast(1), "thrun: samples")
-            .number("alfa1_rot_rot", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa1_rot_rot; }, "", kNonNegative, "thrun")
-            .number("alfa2_rot_trans", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa2_rot_trans; }, "", kNonNegative, "thrun")
-            .number("alfa3_trans_trans", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa3_trans_trans; }, "", kNonNegative, "thrun")
-            .number("alfa4_trans_rot", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa4_trans_rot; }, "", kNonNegative, "thrun")
-            .number("additional_std_XY", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.additional_std_XY; }, "m", kNonNegative, "thrun")
-            .number("additional_std_phi", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.additional_std_phi; }, "rad", kNonNegative, "thrun");
+            .number("alfa1_rot_rot", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa1_rot_rot; }, "", ValueRange::nonNegative(), "thrun")
+            .number("alfa2_rot_trans", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa2_rot_trans; }, "", ValueRange::nonNegative(), "thrun")
+            .number("alfa3_trans_trans", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa3_trans_trans; }, "", ValueRange::nonNegative(), "thrun")
+            .number("alfa4_trans_rot", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.alfa4_trans_rot; }, "", ValueRange::nonNegative(), "thrun")
+            .number("additional_std_XY", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.additional_std_XY; }, "m", ValueRange::nonNegative(), "thrun")
+            .number("additional_std_phi", [](auto& o) -> auto& { return o.mrpt_options.thrunModel.additional_std_phi; }, "rad", ValueRange::nonNegative(), "thrun");
     return t;
 }
 

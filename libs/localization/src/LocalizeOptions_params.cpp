@@ -7,8 +7,6 @@
 namespace simp::localization {
 namespace {
 using io::ValueRange;
-const ValueRange kNonNegative = ValueRange::atLeast(0);
-const ValueRange kFraction = ValueRange::between(0, 1);
 const ValueRange kCount = ValueRange::between(1, 1e6);
 }  // namespace
 
@@ -20,18 +18,18 @@ const io::OptionTable<StateParams>& stateParamsTable() {
             .number("fit_max_age_s", &O::fit_max_age_s, "s", ValueRange::positive(), "... and not older than this")
             .integer("fit_min_detections", &O::fit_min_detections, kCount, "fewer in the window: the fit says nothing")
             .number("explained_ratio", &O::explained_ratio, "", ValueRange::positive(), "explained: p(z|m,x) >= this x eta")
-            .number("localized_min_fit", &O::localized_min_fit, "", kFraction, "localized needs at least this fit ...")
-            .number("localized_min_weight", &O::localized_min_weight, "", kFraction, "... this cluster weight fraction ...")
+            .number("localized_min_fit", &O::localized_min_fit, "", ValueRange::fraction(), "localized needs at least this fit ...")
+            .number("localized_min_weight", &O::localized_min_weight, "", ValueRange::fraction(), "... this cluster weight fraction ...")
             .number("localized_max_std_m", &O::localized_max_std_m, "m", ValueRange::positive(), "... a cluster position spread under this ...")
             .integer("localized_min_updates", &O::localized_min_updates, kCount, "... over this many consecutive updates with detections")
             .integer("lost_window", &O::lost_window, kCount, "the lost test looks at this many last detections ...")
-            .number("lost_max_fit", &O::lost_max_fit, "", kFraction, "localized -> lost when their fit falls to this ...")
-            .number("lost_min_weight", &O::lost_min_weight, "", kFraction, "... or the cluster weight under this ...")
-            .number("rival_margin", &O::rival_margin, "nats", kNonNegative, "localized needs the estimate to beat every distinct pose by this")
+            .number("lost_max_fit", &O::lost_max_fit, "", ValueRange::fraction(), "localized -> lost when their fit falls to this ...")
+            .number("lost_min_weight", &O::lost_min_weight, "", ValueRange::fraction(), "... or the cluster weight under this ...")
+            .number("rival_margin", &O::rival_margin, "nats", ValueRange::nonNegative(), "localized needs the estimate to beat every distinct pose by this")
             .number("rival_lost_margin", &O::rival_lost_margin, "nats", ValueRange::positive(), "... or a distinct pose explains the window better by this")
-            .number("object_radius_m", &O::object_radius_m, "m", kNonNegative, "> 0: the window counts objects of this radius, not detections")
-            .number("local_margin", &O::local_margin, "nats", kNonNegative, "> 0: a pose near the estimate that explains the window better by this: not localized, resetting about it; 0 = off")
-            .number("local_entry_margin", &O::local_entry_margin, "nats", kNonNegative, "> 0: entering localized also needs no pose near the estimate better by this (stricter than local_margin); 0 = local_margin")
+            .number("object_radius_m", &O::object_radius_m, "m", ValueRange::nonNegative(), "> 0: the window counts objects of this radius, not detections")
+            .number("local_margin", &O::local_margin, "nats", ValueRange::nonNegative(), "> 0: a pose near the estimate that explains the window better by this: not localized, resetting about it; 0 = off")
+            .number("local_entry_margin", &O::local_entry_margin, "nats", ValueRange::nonNegative(), "> 0: entering localized also needs no pose near the estimate better by this (stricter than local_margin); 0 = local_margin")
             .rule("fit_min_detections", [](const O& o) { return o.fit_min_detections <= o.fit_window; }, "be <= fit_window")
             .rule("lost_window", [](const O& o) { return o.lost_window <= o.fit_window; }, "be <= fit_window")
             .rule("lost_max_fit", [](const O& o) { return o.lost_max_fit < o.localized_min_fit; }, "be smaller than localized_min_fit");
@@ -42,7 +40,7 @@ const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable() {
     using O = DetectionNoveltyParams;
     static const io::OptionTable<O> t =
         io::OptionTable<O>("DetectionNovelty")
-            .number("decorrelation_distance_m", &O::decorrelation_distance_m, "m", kNonNegative,
+            .number("decorrelation_distance_m", &O::decorrelation_distance_m, "m", ValueRange::nonNegative(),
                     "robot travel after which a detection's error is new; 0 = off")
             .number("min_weight", &O::min_weight, "", ValueRange::aboveUpTo(0, 1), "weight of an immediate repeat")
             .number("track_radius_m", &O::track_radius_m, "m", ValueRange::positive(), "same class within this distance = same object")
@@ -54,18 +52,18 @@ const io::OptionTable<SensorResettingParams>& resettingParamsTable() {
     using O = SensorResettingParams;
     static const io::OptionTable<O> t =
         io::OptionTable<O>("SensorResetting")
-            .number("global_fraction", &O::global_fraction, "", kFraction, "particles replaced per update while searching")
-            .number("lost_fraction", &O::lost_fraction, "", kFraction, "... while lost")
-            .number("localized_fraction", &O::localized_fraction, "", kFraction, "... while localized")
-            .number("local_fraction", &O::local_fraction, "", kFraction, "... drawn about a better pose near the estimate ([State] local_margin)")
-            .number("local_position_std_m", &O::local_position_std_m, "m", kNonNegative, "... with this position spread")
-            .number("local_heading_std_rad", &O::local_heading_std_rad, "rad", kNonNegative, "... and heading spread")
-            .number("uniform_share", &O::uniform_share, "", kFraction, "of the injected particles, this share uniform over free space")
-            .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", kNonNegative,
+            .number("global_fraction", &O::global_fraction, "", ValueRange::fraction(), "particles replaced per update while searching")
+            .number("lost_fraction", &O::lost_fraction, "", ValueRange::fraction(), "... while lost")
+            .number("localized_fraction", &O::localized_fraction, "", ValueRange::fraction(), "... while localized")
+            .number("local_fraction", &O::local_fraction, "", ValueRange::fraction(), "... drawn about a better pose near the estimate ([State] local_margin)")
+            .number("local_position_std_m", &O::local_position_std_m, "m", ValueRange::nonNegative(), "... with this position spread")
+            .number("local_heading_std_rad", &O::local_heading_std_rad, "rad", ValueRange::nonNegative(), "... and heading spread")
+            .number("uniform_share", &O::uniform_share, "", ValueRange::fraction(), "of the injected particles, this share uniform over free space")
+            .number("position_std_m", [](auto& o) -> auto& { return o.sampler.position_std_m; }, "m", ValueRange::nonNegative(),
                     "spread of a drawn position about the exact fit")
-            .number("heading_std_rad", [](auto& o) -> auto& { return o.sampler.heading_std_rad; }, "rad", kNonNegative,
+            .number("heading_std_rad", [](auto& o) -> auto& { return o.sampler.heading_std_rad; }, "rad", ValueRange::nonNegative(),
                     "spread of a drawn heading")
-            .number("square_ratio", [](auto& o) -> auto& { return o.sampler.square_ratio; }, "", kFraction,
+            .number("square_ratio", [](auto& o) -> auto& { return o.sampler.square_ratio; }, "", ValueRange::fraction(),
                     "footprints with short / long side >= this are square (heading ambiguous by pi/2)");
     return t;
 }
@@ -78,11 +76,11 @@ const io::OptionTable<HypothesisSearchParams>& searchParamsTable() {
             .integer("min_window_detections", &O::min_window_detections, kCount, "fewer detections in the window: no search")
             .integer("max_candidates", &O::max_candidates, kCount, "exact fits scored per search (the first ones)")
             .integer("pair_candidates", &O::pair_candidates, ValueRange::between(0, 1e6), "fits of detection pairs on map object pairs scored first (0: off)")
-            .number("pair_min_separation_m", [](auto& o) -> auto& { return o.pairs.min_separation_m; }, "m", kNonNegative,
+            .number("pair_min_separation_m", [](auto& o) -> auto& { return o.pairs.min_separation_m; }, "m", ValueRange::nonNegative(),
                     "detection pairs closer than this are not used")
-            .number("pair_tolerance_m", [](auto& o) -> auto& { return o.pairs.tolerance_m; }, "m", kNonNegative,
+            .number("pair_tolerance_m", [](auto& o) -> auto& { return o.pairs.tolerance_m; }, "m", ValueRange::nonNegative(),
                     "|map distance - detection distance| allowed")
-            .number("pair_merge_radius_m", [](auto& o) -> auto& { return o.pairs.merge_radius_m; }, "m", kNonNegative,
+            .number("pair_merge_radius_m", [](auto& o) -> auto& { return o.pairs.merge_radius_m; }, "m", ValueRange::nonNegative(),
                     "window detections of one class this close are one object")
             .integer("refine_top", &O::refine_top, kCount, "best distinct candidates refined by a local grid search")
             .number("refine_step_m", &O::refine_step_m, "m", ValueRange::positive(), "first grid step; halved once")
@@ -92,7 +90,7 @@ const io::OptionTable<HypothesisSearchParams>& searchParamsTable() {
             .integer("max_hypotheses", &O::max_hypotheses, kCount, "distinct poses kept")
             .flag("while_global", &O::while_global, "also search while global")
             .flag("while_localized", &O::while_localized, "also search while localized (rival test for lost) ...")
-            .number("check_period_s", &O::check_period_s, "s", kNonNegative, "... at most this often; always while lost");
+            .number("check_period_s", &O::check_period_s, "s", ValueRange::nonNegative(), "... at most this often; always while lost");
     return t;
 }
 
@@ -101,15 +99,15 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
     static const io::OptionTable<O> t =
         io::OptionTable<O>("Challenger")
             .flag("enabled", &O::enabled, "a second particle set searches globally while lost")
-            .number("win_margin", &O::win_margin, "nats", kNonNegative, "it replaces the current set when it explains the window better by this")
-            .number("agree_distance_m", &O::agree_distance_m, "m", kNonNegative, "... or is localized this close to the current estimate")
-            .number("reset_fraction", &O::reset_fraction, "", kFraction, "of its particles reset from the detections per update")
+            .number("win_margin", &O::win_margin, "nats", ValueRange::nonNegative(), "it replaces the current set when it explains the window better by this")
+            .number("agree_distance_m", &O::agree_distance_m, "m", ValueRange::nonNegative(), "... or is localized this close to the current estimate")
+            .number("reset_fraction", &O::reset_fraction, "", ValueRange::fraction(), "of its particles reset from the detections per update")
             .flag("reset_by_fit", &O::reset_by_fit, "reset_fraction x the share of the window its estimate leaves unexplained")
             .flag("hypothesis_search", &O::hypothesis_search, "until localized: reset about the places that explain the detections since lost best; localized only when no other place explains them as well")
             .integer("particles", &O::particles, ValueRange::between(0, 1e6), "its particles (0: particles_count)")
             .integer("window", &O::window, ValueRange::between(1, 1000), "detections since lost it is judged on (the last ones)")
             .number("window_max_age_s", &O::window_max_age_s, "s", ValueRange::positive(), "... and not older than this")
-            .number("replace_max_fit", &O::replace_max_fit, "", kFraction, "it replaces the current set elsewhere only when the current estimate explains at most this share of the window");
+            .number("replace_max_fit", &O::replace_max_fit, "", ValueRange::fraction(), "it replaces the current set elsewhere only when the current estimate explains at most this share of the window");
     return t;
 }
 

@@ -11,13 +11,12 @@ namespace simp::localization {
 const io::OptionTable<LidarModelOptions>& LidarModelOptions::table() {
     using O = LidarModelOptions;
     using io::ValueRange;
-    const ValueRange kFraction = ValueRange::between(0, 1);
     static const io::OptionTable<O> t =
         io::OptionTable<O>("LidarModel")
             .number("weight", &O::weight, "", ValueRange::between(0, 100), "exponent of the scan likelihood (relative to the object model's 1 in `simp+lidar`)")
             .integer("decimation", &O::decimation, ValueRange::between(1, 10000), "every n-th beam (1081 -> 109), `LF_decimation`")
             .number("sigma_m", &O::sigma_m, "m", ValueRange::aboveUpTo(0, 10), "std of a beam end around the nearest wall, `LF_stdHit`")
-            .number("z_hit", &O::z_hit, "", kFraction, "weight of the hit model, `LF_zHit`")
+            .number("z_hit", &O::z_hit, "", ValueRange::fraction(), "weight of the hit model, `LF_zHit`")
             .number("z_random", &O::z_random, "", ValueRange::aboveUpTo(0, 1),
                     "weight of random returns, `LF_zRandom` (> 0: one stray beam stays possible)")
             .number("max_range_m", &O::max_range_m, "m", ValueRange::aboveUpTo(0, 1000), "beams beyond are not weighed, `LF_maxRange`")

@@ -16,10 +16,6 @@
 #include <string>
 
 namespace simp::mapping {
-namespace {
-/// Cost of a pair that must never be associated (different classes); > any Eq. costfunc value.
-constexpr double kForbiddenCost = 2.0;
-}  // namespace
 
 ObjectMapBuilder::ObjectMapBuilder(const TOptions& options) : m_options(options) { m_options.validate(); }
 

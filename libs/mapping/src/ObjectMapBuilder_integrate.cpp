@@ -14,7 +14,6 @@
 
 namespace simp::mapping {
 namespace {
-constexpr double kForbiddenCost = 2.0;  ///< different classes: never associated
 constexpr double kNotDuplicate = 3.0;   ///< duplicateCost() of a pair that is not one object
 }  // namespace
 

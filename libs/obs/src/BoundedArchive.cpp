@@ -4,6 +4,7 @@
 #include <mrpt/obs/CObservation.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/rtti/CObject.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/obs/BoundedArchive.h>
 
 #include "MrptClassGuards.h"
@@ -20,9 +21,7 @@ namespace simp::obs {
 
 namespace {
 
-/// Thrun motion-model particles all robot movements of one entry may draw together (MRPT's default is
-/// 300 per movement; MRPT 2.5 allocates 32 bytes per particle before any check).
-constexpr std::uint64_t kMaxThrunParticles = 100000;
+using limits::kMaxThrunParticles;
 /// A real collection holds 1-3 actions.
 constexpr std::uint32_t kMaxActionsPerCollection = 64;
 /// Each element of a container is an object: name length byte, >= 1 name byte, end flag.

@@ -14,6 +14,7 @@
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
 #include <mrpt/rtti/CObject.h>
+#include <simp/obs/InputLimits.h>
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <cstring>
@@ -24,9 +25,7 @@ namespace simp::obs::detail {
 
 namespace {
 
-/// Thrun's motion model draws this many particles at deserialization; MRPT's default is 300 (MRPT 2.5
-/// allocates 32 bytes per particle before any check).
-constexpr std::uint32_t kMaxThrunParticles = 100000;
+using limits::kMaxThrunParticles;
 /// Bytes a robot movement's motion model spans after its version (method, CPose2D header of <= 121
 /// bytes and data, model, six floats, particle count).
 constexpr std::size_t kMovementPeekBytes = 4 + 1 + 120 + 1 + 24 + 1 + 4 + 24 + 4 + 8;

@@ -12,7 +12,6 @@ namespace simp::sim {
 namespace {
 
 using io::ValueRange;
-const ValueRange kProbability = ValueRange::between(0, 1);
 
 /// A per-class list "v0 v1 ... v13" (one number >= 0 per class of obs::defaultClassNames()).
 std::vector<double> perClassList(const std::string& text, const std::string& at) {
@@ -77,11 +76,11 @@ const io::OptionTable<VisibilityParams>& VisibilityParams::table() {
         perClass(t, "min_range_m", &O::min_range_m, "per class: minimum horizontal distance camera -> box centre; 0 = no limit");
         perClass(t, "max_range_m", &O::max_range_m, "per class: maximum distance; 0 = `default_max_range_m`");
         t.number("default_max_range_m", &O::default_max_range_m, "m", ValueRange::positive(), "range limit of classes whose maximum is 0")
-            .number("min_inside_fraction", &O::min_inside_fraction, "", kProbability, "truncation: fraction of the 8 projected box corners that must fall inside the image")
+            .number("min_inside_fraction", &O::min_inside_fraction, "", ValueRange::fraction(), "truncation: fraction of the 8 projected box corners that must fall inside the image")
             .integer("wall_rays", &O::wall_rays, ValueRange::between(1, 17), "wall occlusion: rays to the box centre and `wall_rays` - 1 footprint points")
-            .number("min_visible_ray_fraction", &O::min_visible_ray_fraction, "", kProbability, "fraction of the rays that must cross no wall cell")
+            .number("min_visible_ray_fraction", &O::min_visible_ray_fraction, "", ValueRange::fraction(), "fraction of the rays that must cross no wall cell")
             .number("self_margin_m", &O::self_margin_m, "m", ValueRange{0, 1, false, true}, "rays ignore wall cells this close to the object's own footprint")
-            .number("max_occluded_fraction", &O::max_occluded_fraction, "", kProbability, "object occlusion: dropped when more of its 2D box is covered by nearer boxes");
+            .number("max_occluded_fraction", &O::max_occluded_fraction, "", ValueRange::fraction(), "object occlusion: dropped when more of its 2D box is covered by nearer boxes");
         return t;
     }();
     return t;
@@ -91,19 +90,19 @@ const io::OptionTable<DetectorParams>& DetectorParams::table() {
     using O = DetectorParams;
     static const io::OptionTable<O> t =
         io::OptionTable<O>("detector")
-            .number("detection_probability", &O::detection_probability, "", kProbability, "probability that a visible object is detected")
+            .number("detection_probability", &O::detection_probability, "", ValueRange::fraction(), "probability that a visible object is detected")
             .number("default_noise_std_m", &O::default_noise_std_m, "m", ValueRange::positive(), "centre std of classes without a noise model")
             .number("z_std_m", &O::z_std_m, "m", ValueRange::atLeast(0), "std of the box centre height")
             .number("size_std_fraction", &O::size_std_fraction, "", ValueRange::atLeast(0), "relative std of each box dimension")
             .number("yaw_std_rad", &O::yaw_std_rad, "rad", ValueRange::atLeast(0), "std of the box yaw")
-            .number("wrong_class_probability", &O::wrong_class_probability, "", kProbability, "a true detection gets another class label, scored like a false one")
-            .number("confidence_true_mean", &O::confidence_true_mean, "", kProbability, "score of true detections: mean")
+            .number("wrong_class_probability", &O::wrong_class_probability, "", ValueRange::fraction(), "a true detection gets another class label, scored like a false one")
+            .number("confidence_true_mean", &O::confidence_true_mean, "", ValueRange::fraction(), "score of true detections: mean")
             .number("confidence_true_std", &O::confidence_true_std, "", ValueRange::atLeast(0), "score of true detections: std")
-            .number("confidence_false_mean", &O::confidence_false_mean, "", kProbability, "score of false detections: mean")
+            .number("confidence_false_mean", &O::confidence_false_mean, "", ValueRange::fraction(), "score of false detections: mean")
             .number("confidence_false_std", &O::confidence_false_std, "", ValueRange::atLeast(0), "score of false detections: std")
-            .number("min_confidence", &O::min_confidence, "", kProbability, "detections scoring below are not reported")
+            .number("min_confidence", &O::min_confidence, "", ValueRange::fraction(), "detections scoring below are not reported")
             .number("reference_distance_m", &O::reference_distance_m, "m", ValueRange::positive(), "the class noise model holds at this distance; the along-ray error scales with distance / this")
-            .number("persistent_variance_fraction", &O::persistent_variance_fraction, "", kProbability, "fraction of the centre-noise variance that is persistent per object and viewpoint cell")
+            .number("persistent_variance_fraction", &O::persistent_variance_fraction, "", ValueRange::fraction(), "fraction of the centre-noise variance that is persistent per object and viewpoint cell")
             .number("viewpoint_bin_deg", &O::viewpoint_bin_deg, "deg", ValueRange::positive(), "viewpoint cells: bearing object -> camera sectors")
             .number("viewpoint_bin_m", &O::viewpoint_bin_m, "m", ValueRange::positive(), "viewpoint cells: distance rings")
             .flag("noise_model_includes_extent", &O::noise_model_includes_extent, "true = centre noise = the model's covariance minus the footprint's (side^2 / 12 per axis)")

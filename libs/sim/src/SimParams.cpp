@@ -11,7 +11,6 @@
 namespace simp::sim {
 namespace {
 using io::ValueRange;
-const ValueRange kProbability = ValueRange::between(0, 1);
 }  // namespace
 
 const io::OptionTable<OfficeParams>& OfficeParams::table() {
@@ -30,7 +29,7 @@ const io::OptionTable<OfficeParams>& OfficeParams::table() {
             .number("room_depth_max_m", &O::room_depth_max_m, "m", ValueRange::finite(), "the same, maximum")
             .integer("max_rooms_per_side", &O::max_rooms_per_side, ValueRange::atLeast(1), "rooms along one side of one corridor before another corridor is started")
             .number("kitchen_every_n_rooms", &O::kitchen_every_n_rooms, "", ValueRange::positive(), "one kitchen per this many rooms (at least one from 4 rooms)")
-            .number("meeting_fraction", &O::meeting_fraction, "", kProbability, "fraction of the remaining rooms that are meeting rooms")
+            .number("meeting_fraction", &O::meeting_fraction, "", ValueRange::fraction(), "fraction of the remaining rooms that are meeting rooms")
             .rule("rooms", [](const O& o) { return o.size_m2 > 0 || (o.rooms >= 1 && o.rooms <= 2000); }, "be in [1, 2000] when size_m2 <= 0")
             .rule("room_width_max_m", [](const O& o) { return o.room_width_max_m >= o.room_width_min_m; }, "be >= room_width_min_m")
             .rule("room_depth_max_m", [](const O& o) { return o.room_depth_max_m >= o.room_depth_min_m; }, "be >= room_depth_min_m")
@@ -61,7 +60,7 @@ const io::OptionTable<TrajectoryParams>& TrajectoryParams::table() {
             .number("speed_max_mps", &O::speed_max_mps, "m/s", ValueRange::positive(), "forward speed: maximum")
             .number("turn_rate_radps", &O::turn_rate_radps, "rad/s", ValueRange::positive(), "maximum rotation rate")
             .number("turn_in_place_rad", &O::turn_in_place_rad, "rad", ValueRange::finite(), "heading error above which the robot stops and turns in place")
-            .number("spin_probability", &O::spin_probability, "", kProbability, "probability of a full turn on the spot on reaching a room goal")
+            .number("spin_probability", &O::spin_probability, "", ValueRange::fraction(), "probability of a full turn on the spot on reaching a room goal")
             .choice("visit_order", &O::coverage, std::vector<std::pair<std::string, bool>>{{"shuffled", false}, {"coverage", true}},
                     "room goals of each round shuffled (errands) or coverage (nearest room not yet visited, a full turn in every room: a mapping run; `--coverage`)")
             .number("coverage_part_m", &O::coverage_part_m, "m", ValueRange::positive(), "coverage: each room's bounding box is cut into parts of about this size (at most 2 x 2), one goal each")
@@ -89,7 +88,7 @@ const io::OptionTable<ChangeParams>& ChangeParams::table() {
     using O = ChangeParams;
     static const io::OptionTable<O> t =
         io::OptionTable<O>("changes")
-            .number("fraction", &O::fraction, "", kProbability, "fraction of the non-door objects that change: a third removed, moved, added (`--changes` overrides)")
+            .number("fraction", &O::fraction, "", ValueRange::fraction(), "fraction of the non-door objects that change: a third removed, moved, added (`--changes` overrides)")
             .number("shift_min_m", &O::shift_min_m, "m", ValueRange::atLeast(0), "a moved object is shifted by a distance in [min, max]")
             .number("shift_max_m", &O::shift_max_m, "m", ValueRange::finite(), "the same, maximum")
             .number("rotation_std_deg", &O::rotation_std_deg, "deg", ValueRange::atLeast(0), "and rotated by N(0, std)")

@@ -8,8 +8,8 @@
 namespace simp::world {
 namespace {
 
-constexpr const char* kFormat = "simp-changes";
-constexpr int kVersion = 1;
+constexpr const char* kChangesFormat = "simp-changes";
+constexpr int kChangesVersion = 1;
 
 /// Upright boxes need only the yaw (every object of the project's worlds stands upright).
 nlohmann::ordered_json poseToJson(const std::optional<geometry::Box3D>& b) {
@@ -61,8 +61,8 @@ void saveChangesFile(const std::vector<ChangeRecord>& changes, const std::string
         list.push_back(e);
     }
     nlohmann::ordered_json j;
-    j["format"] = kFormat;
-    j["version"] = kVersion;
+    j["format"] = kChangesFormat;
+    j["version"] = kChangesVersion;
     j["changes"] = list;
     writeJsonFile(j, path);
 }
@@ -70,9 +70,9 @@ void saveChangesFile(const std::vector<ChangeRecord>& changes, const std::string
 std::vector<ChangeRecord> loadChangesFile(const std::string& path) {
     const nlohmann::json j = readJsonFile(path);
     if (!j.is_object()) failAt(path, "", "expected a JSON object (a simp-changes file)");
-    if (asString(requireKey(j, "format", path, "format"), path, "format") != kFormat)
-        failAt(path, "format", std::string("expected \"") + kFormat + "\"");
-    if (asInteger(requireKey(j, "version", path, "version"), path, "version") != kVersion)
+    if (asString(requireKey(j, "format", path, "format"), path, "format") != kChangesFormat)
+        failAt(path, "format", std::string("expected \"") + kChangesFormat + "\"");
+    if (asInteger(requireKey(j, "version", path, "version"), path, "version") != kChangesVersion)
         failAt(path, "version", "unsupported version (this reader knows version 1)");
     const nlohmann::json& list = requireKey(j, "changes", path, "changes");
     if (!list.is_array()) failAt(path, "changes", "expected a list");

@@ -33,8 +33,8 @@ int asInt(const json& v, const std::string& file, const std::string& key, long l
     return static_cast<int>(x);
 }
 
-constexpr const char* kFormat = "simp-object-map";
-constexpr int kVersion = 1;
+constexpr const char* kObjectMapFormat = "simp-object-map";
+constexpr int kObjectMapVersion = 1;
 
 nlohmann::ordered_json noiseToJson(const model::NoiseModel& n) {
     return nlohmann::ordered_json{{"mean_m", {n.mean_m.x(), n.mean_m.y()}},
@@ -140,11 +140,11 @@ ObjectMapData loadObjectMap(const std::string& path) {
     const json j = readJsonFile(path);
     if (!j.is_object()) failAt(path, "", "expected a JSON object at the top level");
     const std::string format = asString(requireKey(j, "format", path, "format"), path, "format");
-    if (format != kFormat) failAt(path, "format", "expected \"" + std::string(kFormat) + "\", got \"" + format + "\"");
+    if (format != kObjectMapFormat) failAt(path, "format", "expected \"" + std::string(kObjectMapFormat) + "\", got \"" + format + "\"");
     const long long version = asInteger(requireKey(j, "version", path, "version"), path, "version");
-    if (version != kVersion)
+    if (version != kObjectMapVersion)
         failAt(path, "version", "unsupported version " + std::to_string(version) + " (this build reads version " +
-                                          std::to_string(kVersion) + ")");
+                                          std::to_string(kObjectMapVersion) + ")");
 
     ObjectMapData d;
     const json& classes = requireKey(j, "classes", path, "classes");
@@ -216,8 +216,8 @@ ObjectMapData loadObjectMap(const std::string& path) {
 void saveObjectMap(const ObjectMapData& d, const std::string& path) {
     validateObjectMap(d, path);
     nlohmann::ordered_json j;
-    j["format"] = kFormat;
-    j["version"] = kVersion;
+    j["format"] = kObjectMapFormat;
+    j["version"] = kObjectMapVersion;
     j["classes"] = d.class_names;
     nlohmann::ordered_json cn = nlohmann::ordered_json::object();
     for (std::size_t c = 0; c < d.class_noise.size(); ++c)

@@ -17,6 +17,10 @@ inline cv::Scalar toBgr(const obs::Rgb& rgb) {
 }
 
 /// BGR colour of the class called `class_name` (obs::classColorRgb: the same in every figure and 3D view).
+/// The palette's text and grid colours in OpenCV's BGR (axes, labels, grid lines of every figure).
+inline const cv::Scalar kTextBgr = toBgr(obs::figure_colors::kText);
+inline const cv::Scalar kGridBgr = toBgr(obs::figure_colors::kGrid);
+
 inline cv::Scalar classColor(const std::string& class_name) { return toBgr(obs::classColorRgb(class_name)); }
 
 /// BGR colour of class `class_id` of the list `class_names` (a world's objects.class_names).

@@ -39,6 +39,9 @@ struct ValueRange {
     static ValueRange atLeast(double lo) { return {lo, std::numeric_limits<double>::infinity(), false, false}; }
     static ValueRange atMost(double hi) { return {-std::numeric_limits<double>::infinity(), hi, false, false}; }
     static ValueRange between(double lo, double hi) { return {lo, hi, false, false}; }
+    /// [0, 1]: fractions and probabilities.
+    static ValueRange fraction() { return between(0, 1); }
+    static ValueRange nonNegative() { return atLeast(0); }
     /// (lo, hi] / (lo, hi): probabilities and rates that must not be 0 (or 1).
     static ValueRange aboveUpTo(double lo, double hi) { return {lo, hi, true, false}; }
     static ValueRange open(double lo, double hi) { return {lo, hi, true, true}; }

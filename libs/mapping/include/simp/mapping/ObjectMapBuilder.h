@@ -125,6 +125,8 @@ class ObjectMapBuilder {
                     std::vector<bool>& candidate, std::vector<bool>* active_behind_new = nullptr);
 
    private:
+    /// Cost of a pair that must never be associated (different classes); > any Eq. costfunc value.
+    static constexpr double kForbiddenCost = 2.0;
     int mapClassOf(const std::string& name);
     /// The noise model used in C_cen (Eq. costfunc): the given model (else the isotropic default),
     /// with its mean zeroed unless cost_uses_noise_mean.

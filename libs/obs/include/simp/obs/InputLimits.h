@@ -24,5 +24,9 @@ constexpr std::size_t kMaxDetectionsPerFrame = 10000;
 constexpr std::size_t kMaxMapObjects = 1000000;
 /// Largest image side, px (camera images and floor-plan rasters).
 constexpr std::uint32_t kMaxImageSide_px = 65536;
+/// Most Thrun motion-model particles the robot movements of one rawlog entry may draw together (MRPT's
+/// default is 300 per movement; MRPT 2.5 allocates 32 bytes per particle at deserialization, before
+/// any check).
+constexpr std::uint32_t kMaxThrunParticles = 100000;
 
 }  // namespace simp::obs::limits
