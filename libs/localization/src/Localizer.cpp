@@ -380,10 +380,8 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
             StepRecord ignored;
             update(*m_challenger->mcl, m_challenger->monitor.state(), no_motion ? nullptr : &m_pending, all, ignored);
         }
-        if (m_scan_model && m_pending_scan && m_opts.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfStandardProposal) {
+        if (m_scan_model && m_pending_scan && m_opts.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfStandardProposal)
             m_pending_scan.reset();
-            ++m_scans_used;
-        }
         m_pending = mrpt::poses::CPose2D();
         m_first = false;
     } else if (e.keep_skipped_detections) {

@@ -115,10 +115,4 @@ ObjectProbabilityMap::Lookup ObjectProbabilityMap::bruteForce(int class_id, doub
     return best;
 }
 
-std::size_t ObjectProbabilityMap::memoryBytes() const {
-    std::size_t bytes = m_distributions.size() * sizeof(model::ObjectDistribution);
-    for (const auto& c : m_classes) bytes += c.best.size() * sizeof(std::int32_t);
-    return bytes;
-}
-
 }  // namespace simp::maps

@@ -85,7 +85,6 @@ class CommandLine {
 
     const std::string& name() const { return m_name; }
     const std::string& summary() const { return m_summary; }
-    const std::string& notesText() const { return m_notes; }
     const std::vector<CommandOption>& options() const { return m_options; }
 
     /// Set by CommandSet: "for command 'world'" is added to unknown-option errors.

@@ -36,7 +36,6 @@ class DetectionNovelty {
                               double t_s);
 
     void clear() { m_tracks.clear(); }
-    std::size_t trackCount() const { return m_tracks.size(); }
 
    private:
     struct Track {

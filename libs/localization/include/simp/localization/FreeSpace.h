@@ -21,9 +21,6 @@ class FreeSpace {
     /// A pose drawn uniformly over the free cells (uniform inside the cell) with a uniform
     /// heading in [-pi, pi), using mrpt::random::getRandomGenerator().
     mrpt::math::TPose2D drawUniform() const;
-    std::size_t freeCellCount() const { return m_free_cells.size(); }
-    /// Free area (m^2).
-    double freeArea() const { return m_free_cells.size() * m_res * m_res; }
 
    private:
     double m_x_min = 0, m_y_min = 0, m_res = 1;

@@ -124,8 +124,6 @@ class Localizer {
     /// Challengers started and challengers that replaced the current set, so far ([Challenger]).
     std::size_t challengersStarted() const { return m_challengers_started; }
     std::size_t challengersWon() const { return m_challengers_won; }
-    /// Scans weighed so far.
-    std::size_t scansUsed() const { return m_scans_used; }
 
     const ObjectMcl& filter() const { return *m_mcl; }
     LocalizationState state() const { return m_monitor.state(); }
@@ -199,7 +197,6 @@ class Localizer {
     std::shared_ptr<const ScanLikelihood> m_scan_model;
     bool m_use_objects = true;
     mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
-    std::size_t m_scans_used = 0;
 };
 
 /// Bins of kld's sizes (xy in m, phi in rad) that hold at least one particle.

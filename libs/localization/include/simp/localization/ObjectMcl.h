@@ -51,7 +51,6 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     double recovery_alpha_slow = 0.0;
     double recovery_alpha_fast = 0.0;
 
-    const maps::CObjectMap& objectMap() const { return *m_map; }
     /// Detections K used by the last update (0: no update or no usable detection).
     std::size_t lastDetectionCount() const { return m_last_K; }
     /// Particles redrawn by the last prediction.

@@ -45,7 +45,6 @@ class MapApp {
     const ObjectMapBuilder& builder() const { return m_builder; }
     const MapAppArgs& args() const { return m_args; }
     std::size_t framesMapped() const { return m_frames_mapped; }
-    std::size_t framesWithoutPose() const { return m_frames_without_pose; }
     /// --update: the changes detected against M0 (empty otherwise).
     const MapUpdateResult& update() const { return m_update; }
 

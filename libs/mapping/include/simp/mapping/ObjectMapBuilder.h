@@ -92,7 +92,6 @@ class ObjectMapBuilder {
     /// The map to use: m_g without its tentative objects, those the builder made that have fewer
     /// than min_confirmed_matches detections (objects of the map given to setMap always stay).
     world::ObjectMapData confirmedMap() const;
-    const std::vector<LocalObject>& localMap() const { return m_local; }
     /// True for the ids of the map given to setMap (the earlier session's objects).
     bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
     /// This session's evidence about a map object (zero when none).

@@ -26,7 +26,6 @@ class EdtMap {
         if (cell < 0) return m_max_distance_m;
         return c.distance_m[static_cast<std::size_t>(cell)];
     }
-    double maxDistance() const { return m_max_distance_m; }
 
    private:
     struct ClassEdt {

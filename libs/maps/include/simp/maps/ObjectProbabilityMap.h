@@ -68,8 +68,6 @@ class ObjectProbabilityMap {
     const model::ObjectDistribution& distribution(std::size_t o) const { return m_distributions.at(o); }
     const std::vector<int>& skippedClasses() const { return m_skipped_classes; }
     const Options& options() const { return m_options; }
-    /// Bytes used by the rasters.
-    std::size_t memoryBytes() const;
 
    private:
     struct ClassRaster {

@@ -19,7 +19,6 @@ class ImportMapApp {
     void initialize(int argc, const char* const* argv);
     /// Imports, writes the world directory, prints what was imported; returns the exit code.
     int run(std::ostream& out);
-    bool helpRequested() const { return help_; }
     static std::string usage();
     static io::CommandLine commandLine();  ///< the declared options
 
@@ -36,7 +35,6 @@ class ExportMapApp {
    public:
     void initialize(int argc, const char* const* argv);
     int run(std::ostream& out);
-    bool helpRequested() const { return help_; }
     static std::string usage();
     static io::CommandLine commandLine();  ///< the declared options
 
