@@ -136,11 +136,11 @@ TEST(ObjectMcl, PrunesParticlesThatLeaveTheFreeSpace) {
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     for (std::size_t i = 0; i < mcl.size(); ++i) EXPECT_EQ(mcl.m_particles[i].log_w, -0.001 * static_cast<double>(i));
     // ... or the smallest weight MRPT keeps; with every particle pruned they all get the same one.
-    mcl.prune_keeps_weight = false;
+    mcl.params.prune_keeps_weight = false;
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     EXPECT_EQ(mcl.lastPrunedCount(), 500u);
     for (const auto& p : mcl.m_particles) EXPECT_DOUBLE_EQ(p.log_w, -pf.max_loglikelihood_dyn_range);
-    mcl.prune_outside_free_space = false;
+    mcl.params.prune_outside_free_space = false;
     mcl.prediction_and_update_pfStandardProposal(&acts, nullptr, pf);
     EXPECT_EQ(mcl.lastPrunedCount(), 0u);
 }
@@ -185,8 +185,8 @@ TEST(ObjectMcl, RecoveryInjectsRandomParticlesWhenTheLikelihoodDrops) {
     ObjectMcl mcl(map);
     auto free_space = std::make_shared<FreeSpace>(w.floorplan, 0.7);
     mcl.setFreeSpace(free_space);
-    mcl.recovery_alpha_slow = 0.05;
-    mcl.recovery_alpha_fast = 0.5;
+    mcl.params.recovery_alpha_slow = 0.05;
+    mcl.params.recovery_alpha_fast = 0.5;
     const mrpt::math::TPose2D robot{3.0, 2.0, 0.4};
     mcl.resetDeterministic(mrpt::math::TPose2D(robot), 400);  // all particles at the true pose
     mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;

@@ -12,9 +12,9 @@ TEST(LocalizeOptions, DefaultsAreThePapers) {
     EXPECT_EQ(e.particles_count, 5000u);
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.10);
     EXPECT_DOUBLE_EQ(e.update_min_d_phi, 0.03);
-    EXPECT_TRUE(e.singw_per_frame);
-    EXPECT_FALSE(e.prune_keeps_weight);  // simp.ini's (the paper's true is in simp-paper.ini)
-    EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.0);  // recovery is not the paper's: off
+    EXPECT_TRUE(e.filter.singw_per_frame);
+    EXPECT_FALSE(e.filter.prune_keeps_weight);  // simp.ini's (the paper's true is in simp-paper.ini)
+    EXPECT_DOUBLE_EQ(e.filter.recovery_alpha_fast, 0.0);  // recovery is not the paper's: off
     const auto m = MotionModelOptions::paperDefaults();
     EXPECT_EQ(m.modelSelection, mrpt::obs::CActionRobotMovement2D::mmGaussian);
     EXPECT_DOUBLE_EQ(m.gaussianModel.a1, 0.15);
@@ -53,13 +53,13 @@ TEST(LocalizeOptions, LoadsEveryKey) {
     EXPECT_EQ(e.seed, 9u);
     EXPECT_EQ(e.sensor_model, "d");
     EXPECT_DOUBLE_EQ(e.free_cells_threshold, 0.6);
-    EXPECT_FALSE(e.prune_outside_free_space);
+    EXPECT_FALSE(e.filter.prune_outside_free_space);
     EXPECT_DOUBLE_EQ(e.update_min_d_xy, 0.2);
     EXPECT_EQ(e.estimate_mode, EstimateMode::Mean);
-    EXPECT_FALSE(e.singw_per_frame);
-    EXPECT_FALSE(e.prune_keeps_weight);
-    EXPECT_DOUBLE_EQ(e.recovery_alpha_slow, 0.001);
-    EXPECT_DOUBLE_EQ(e.recovery_alpha_fast, 0.1);
+    EXPECT_FALSE(e.filter.singw_per_frame);
+    EXPECT_FALSE(e.filter.prune_keeps_weight);
+    EXPECT_DOUBLE_EQ(e.filter.recovery_alpha_slow, 0.001);
+    EXPECT_DOUBLE_EQ(e.filter.recovery_alpha_fast, 0.1);
     EXPECT_DOUBLE_EQ(e.min_spread_xy_m, 0.12);
     EXPECT_DOUBLE_EQ(e.min_spread_phi_rad, 0.06);
     MotionModelOptions m;

@@ -122,7 +122,7 @@ TEST(ObjectMcl, PruningNeverTeleportsWeight) {
     auto free_space = std::make_shared<FreeSpace>(w.floorplan, 0.7);
     ObjectMcl mcl(map);
     mcl.setFreeSpace(free_space);
-    mcl.prune_keeps_weight = false;
+    mcl.params.prune_keeps_weight = false;
     mrpt::random::getRandomGenerator().randomize(3);
     mcl.resetAround({0.3, 4.5, M_PI}, 0.2, 0.05, 1000);  // next to the left outer wall (x = 0)
     mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
@@ -200,7 +200,7 @@ TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
     const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
     LocalizerOptions opts;
     opts.experiment.particles_count = 2000;
-    opts.experiment.prune_keeps_weight = false;
+    opts.experiment.filter.prune_keeps_weight = false;
     auto map = makeMap(sc.world);
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
     Localizer loc(map, sc.world.floorplan, opts);

@@ -24,15 +24,15 @@ const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
             .choice("sensor_model", &O::sensor_model, models, "overrides the map's `sensor_model`; empty = the map's (`lidar`, `simp+lidar`: doc/lidar.md)")
             .number("free_cells_threshold", &O::free_cells_threshold, "", ValueRange::aboveUpTo(0, 1),
                     "free cell: p_free >= this (camera::floorplan::kParticleMinFree)")
-            .flag("prune_outside_free_space", &O::prune_outside_free_space, "redraw particles moved off the free space")
+            .flag("prune_outside_free_space", [](auto& o) -> auto& { return o.filter.prune_outside_free_space; }, "redraw particles moved off the free space")
             .number("update_min_d_xy", &O::update_min_d_xy, "m", ValueRange::nonNegative(), "motion that triggers an update (the paper's d_xy; 0 = every frame)")
             .number("update_min_d_phi", &O::update_min_d_phi, "rad", ValueRange::nonNegative(), "rotation that triggers an update (the paper's d_theta; 0 = every frame)")
             .flag("keep_skipped_detections", &O::keep_skipped_detections, "use the detections of the skipped frames at the next update")
-            .flag("prune_keeps_weight", &O::prune_keeps_weight, "false: a pruned particle gets the smallest weight MRPT keeps (max log-weight - `max_loglikelihood_dyn_range`); "
+            .flag("prune_keeps_weight", [](auto& o) -> auto& { return o.filter.prune_keeps_weight; }, "false: a pruned particle gets the smallest weight MRPT keeps (max log-weight - `max_loglikelihood_dyn_range`); "
                   "true: it keeps its weight (authors' code, simp-paper.ini)")
-            .flag("singw_per_frame", &O::singw_per_frame, "Eq. singw per camera frame (time stamp), multiplied over the frames of an update; false = one geometric mean over the update")
-            .number("recovery_alpha_slow", &O::recovery_alpha_slow, "", ValueRange::fraction(), "augmented-MCL long-term rate (0 = no recovery)")
-            .number("recovery_alpha_fast", &O::recovery_alpha_fast, "", ValueRange::fraction(), "augmented-MCL short-term rate, > `recovery_alpha_slow` when not 0")
+            .flag("singw_per_frame", [](auto& o) -> auto& { return o.filter.singw_per_frame; }, "Eq. singw per camera frame (time stamp), multiplied over the frames of an update; false = one geometric mean over the update")
+            .number("recovery_alpha_slow", [](auto& o) -> auto& { return o.filter.recovery_alpha_slow; }, "", ValueRange::fraction(), "augmented-MCL long-term rate (0 = no recovery)")
+            .number("recovery_alpha_fast", [](auto& o) -> auto& { return o.filter.recovery_alpha_fast; }, "", ValueRange::fraction(), "augmented-MCL short-term rate, > `recovery_alpha_slow` when not 0")
             .choice("estimate_mode", &O::estimate_mode,
                     std::vector<std::pair<std::string, EstimateMode>>{{"cluster", EstimateMode::Cluster}, {"mean", EstimateMode::Mean}},
                     "`estimate.tum`: mean of the highest-weight cluster, or of all particles")
@@ -51,7 +51,7 @@ const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
                     "first line of `estimate.tum`: first step in state localized, or first frame")
             .flag("write_particles", &O::write_particles, "write `final_particles.txt`")
             .flag("write_png", &O::write_png, "write `trajectory.png`")
-            .rule("recovery_alpha_slow", [](const O& o) { return o.recovery_alpha_fast == 0.0 || o.recovery_alpha_slow < o.recovery_alpha_fast; },
+            .rule("recovery_alpha_slow", [](const O& o) { return o.filter.recovery_alpha_fast == 0.0 || o.filter.recovery_alpha_slow < o.filter.recovery_alpha_fast; },
                   "be smaller than recovery_alpha_fast (when that is > 0)");
     }();
     return t;

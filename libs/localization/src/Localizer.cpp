@@ -173,11 +173,7 @@ std::unique_ptr<ObjectMcl> Localizer::makeFilter() const {
     const auto& e = m_opts.experiment;
     auto mcl = std::make_unique<ObjectMcl>(m_map);
     mcl->options.KLD_params = m_opts.kld;
-    mcl->prune_outside_free_space = e.prune_outside_free_space;
-    mcl->prune_keeps_weight = e.prune_keeps_weight;
-    mcl->singw_per_frame = e.singw_per_frame;
-    mcl->recovery_alpha_slow = e.recovery_alpha_slow;
-    mcl->recovery_alpha_fast = e.recovery_alpha_fast;
+    mcl->params = e.filter;
     mcl->setFreeSpace(m_free);
     return mcl;
 }

@@ -52,9 +52,9 @@ void ObjectMcl::predict(const mrpt::obs::CActionCollection* actions,
         mrpt::slam::CMonteCarloLocalization2D::prediction_and_update_pfStandardProposal(actions, nullptr, PF_options);
     }
     m_last_pruned = 0;
-    if (prune_outside_free_space && m_free_space) pruneOutsideFreeSpace(PF_options.max_loglikelihood_dyn_range);
+    if (params.prune_outside_free_space && m_free_space) pruneOutsideFreeSpace(PF_options.max_loglikelihood_dyn_range);
     m_last_injected = 0;
-    if (recovery_alpha_fast > 0.0 && m_free_space) injectRandomParticles();
+    if (params.recovery_alpha_fast > 0.0 && m_free_space) injectRandomParticles();
 }
 
 std::size_t ObjectMcl::weigh(const std::vector<WeightedObservation>& observations, double pow_factor) {
@@ -63,9 +63,9 @@ std::size_t ObjectMcl::weigh(const std::vector<WeightedObservation>& observation
     m_poses.resize(n);
     m_log_lik.resize(n);
     for (std::size_t i = 0; i < n; ++i) m_poses[i] = m_particles[i].d;
-    m_last_K = updateLogLikelihoods(*m_map, observations, singw_per_frame, m_poses.data(), n, m_log_lik.data());
+    m_last_K = updateLogLikelihoods(*m_map, observations, params.singw_per_frame, m_poses.data(), n, m_log_lik.data());
     if (m_last_K == 0) return 0;
-    if (recovery_alpha_fast > 0.0) updateRecoveryAverages(m_log_lik.data(), n);
+    if (params.recovery_alpha_fast > 0.0) updateRecoveryAverages(m_log_lik.data(), n);
     for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * pow_factor;
     return m_last_K;
 }
@@ -209,7 +209,7 @@ double ObjectMcl::PF_SLAM_computeObservationLikelihoodForParticle(
     const mrpt::obs::CSensoryFrame& observation, const mrpt::poses::CPose3D& x) const {
     const mrpt::math::TPose2D pose(x.x(), x.y(), x.yaw());
     double log_lik = 0;
-    if (singw_per_frame)
+    if (params.singw_per_frame)
         perFrameLogLikelihoods(*m_map, observation, &pose, 1, &log_lik);
     else
         frameLogLikelihoods(*m_map, observation, &pose, 1, &log_lik);
@@ -221,7 +221,7 @@ void ObjectMcl::pruneOutsideFreeSpace(double dyn_range) {
     std::size_t n = 0;
     for (const auto& p : m_particles) m_free[n++] = m_free_space->isFree(p.d.x, p.d.y);
     double floor_lw = 0.0;
-    if (!prune_keeps_weight) {
+    if (!params.prune_keeps_weight) {
         double max_lw = -std::numeric_limits<double>::infinity();
         std::size_t i = 0;
         for (const auto& p : m_particles)
@@ -233,7 +233,7 @@ void ObjectMcl::pruneOutsideFreeSpace(double dyn_range) {
     for (auto& p : m_particles) {
         if (m_free[i++]) continue;
         p.d = m_free_space->drawUniform();
-        if (!prune_keeps_weight) p.log_w = floor_lw;
+        if (!params.prune_keeps_weight) p.log_w = floor_lw;
         ++m_last_pruned;
     }
 }
@@ -252,8 +252,8 @@ void ObjectMcl::updateRecoveryAverages(const double* log_lik, std::size_t n) {
     if (!(sum_w > 0.0)) return;
     const double w_avg = sum_wl / sum_w;
     if (m_w_slow < 0.0) m_w_slow = m_w_fast = w_avg;
-    m_w_slow += recovery_alpha_slow * (w_avg - m_w_slow);
-    m_w_fast += recovery_alpha_fast * (w_avg - m_w_fast);
+    m_w_slow += params.recovery_alpha_slow * (w_avg - m_w_slow);
+    m_w_fast += params.recovery_alpha_fast * (w_avg - m_w_fast);
 }
 
 void ObjectMcl::injectRandomParticles() {

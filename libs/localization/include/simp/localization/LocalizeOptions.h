@@ -9,6 +9,7 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <simp/localization/ObjectMclParams.h>
 #include <simp/camera/FloorPlanThresholds.h>
 #include <simp/io/OptionTable.h>
 
@@ -39,14 +40,13 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     std::uint32_t seed = 0;               ///< seed of mrpt::random::getRandomGenerator()
     std::string sensor_model;             ///< "" = the [MetricMap] object map's own; else a model::localizationMethods() name
     double free_cells_threshold = camera::floorplan::kParticleMinFree;  ///< a floor-plan cell is free when p_free >= this
-    bool prune_outside_free_space = true; ///< redraw particles that the motion moved off free space
     double update_min_d_xy = 0.10;        ///< filter update after this translation (m); paper d_xy
     double update_min_d_phi = 0.03;       ///< ... or this rotation (rad); paper d_theta
     bool keep_skipped_detections = true;  ///< use the detections of skipped frames at the next update
-    bool prune_keeps_weight = false;      ///< pruned particles keep their weight (false: smallest weight)
-    bool singw_per_frame = true;          ///< Eq. singw per camera frame, product over the update's frames
-    double recovery_alpha_slow = 0.0;     ///< augmented-MCL long-term average rate (0 = no recovery)
-    double recovery_alpha_fast = 0.0;     ///< augmented-MCL short-term average rate (0 = no recovery)
+    /// The filter's own parameters, handed to ObjectMcl as they are. The project's default differs from
+    /// the paper's in one: a pruned particle gets the smallest weight (prune_keeps_weight = false).
+    ObjectMclParams filter{/*prune_outside_free_space=*/true, /*prune_keeps_weight=*/false,
+                           /*singw_per_frame=*/true, /*recovery_alpha_slow=*/0.0, /*recovery_alpha_fast=*/0.0};
     EstimateMode estimate_mode = EstimateMode::Cluster;
     double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
     double cluster_max_dphi = 0.785398;   ///< cluster: and within this heading difference (rad; pi/4 as the .ini files write it)

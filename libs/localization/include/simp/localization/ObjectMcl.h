@@ -7,6 +7,7 @@
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/FreeSpace.h>
+#include <simp/localization/ObjectMclParams.h>
 #include <simp/localization/ScanLikelihood.h>
 #include <simp/maps/CObjectMap.h>
 
@@ -34,22 +35,7 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
 
     /// The free space used for pruning (nullptr, the default, or prune_outside_free_space = false: no pruning).
     void setFreeSpace(std::shared_ptr<const FreeSpace> free_space) { m_free_space = std::move(free_space); }
-    bool prune_outside_free_space = true;
-    /// true: a pruned particle keeps its weight (authors' code); false: it gets the smallest weight
-    /// MRPT keeps (max log-weight - PF_options.max_loglikelihood_dyn_range), i.e. p(x off free space) ~ 0.
-    bool prune_keeps_weight = true;
-
-    /// Recovery by random particles (augmented MCL, Thrun et al., "Probabilistic Robotics", Table 8.3;
-    /// not in the paper; 0 = off). After each update with K > 0 detections, w_avg = the weighted mean
-    /// over the particles of the frame likelihood (Eq. singw) is smoothed into w_slow (rate alpha_slow)
-    /// and w_fast (rate alpha_fast); at the next step each particle is replaced, with probability
-    /// max(0, 1 - w_fast / w_slow), by a pose drawn uniformly over the free space, with the mean weight.
-    /// Requires alpha_slow < alpha_fast, both in [0, 1], and a free space (setFreeSpace).
-    /// true: Eq. singw per camera frame (timestamp), multiplied over the frames of the update
-    /// (perFrameLogLikelihoods); false: one geometric mean over all detections of the update.
-    bool singw_per_frame = true;
-    double recovery_alpha_slow = 0.0;
-    double recovery_alpha_fast = 0.0;
+    ObjectMclParams params;  ///< pruning, singw grouping, recovery ([LocalizationExperiment] keys of the same names)
 
     /// Detections K used by the last update (0: no update or no usable detection).
     std::size_t lastDetectionCount() const { return m_last_K; }
