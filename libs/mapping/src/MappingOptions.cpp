@@ -102,12 +102,8 @@ double MappingOptions::crossRoomMergeRadiusOf(const std::string& class_name) con
 std::optional<WallAlignmentParams> MappingOptions::wallAlignmentOf(const std::string& class_name) const {
     const auto it = class_wall_align_max_gap_m.find(class_name);
     if (wall_align == WallAlignMode::Off || it == class_wall_align_max_gap_m.end()) return std::nullopt;
-    WallAlignmentParams p;
+    WallAlignmentParams p = wall_alignment;
     p.max_gap_m = it->second;
-    p.max_penetration_m = wall_align_max_penetration_m;
-    p.max_yaw_rad = wall_align_max_yaw_rad;
-    p.max_residual_m = wall_align_max_residual_m;
-    p.rays_per_side = wall_align_rays;
     return p;
 }
 
@@ -156,10 +152,10 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             },
             [](const O& o, int precision) { return listText(o.class_wall_align_max_gap_m, precision); },
             [](const O& o) { return allIn(o.class_wall_align_max_gap_m, ValueRange::between(0, 10)); });
-        t.number("wall_align_max_penetration_m", &O::wall_align_max_penetration_m, "m", between(0, 10), "a side this far inside the wall is still pulled out")
-            .number("wall_align_max_yaw_rad", &O::wall_align_max_yaw_rad, "rad", between(0, 1.5), "side within this angle of parallel to the wall")
-            .number("wall_align_max_residual_m", &O::wall_align_max_residual_m, "m", between(0, 10), "straightness of the wall face along the side")
-            .integer("wall_align_rays", &O::wall_align_rays, between(2, 100), "rays per side")
+        t.number("wall_align_max_penetration_m", [](auto& o) -> auto& { return o.wall_alignment.max_penetration_m; }, "m", between(0, 10), "a side this far inside the wall is still pulled out")
+            .number("wall_align_max_yaw_rad", [](auto& o) -> auto& { return o.wall_alignment.max_yaw_rad; }, "rad", between(0, 1.5), "side within this angle of parallel to the wall")
+            .number("wall_align_max_residual_m", [](auto& o) -> auto& { return o.wall_alignment.max_residual_m; }, "m", between(0, 10), "straightness of the wall face along the side")
+            .integer("wall_align_rays", [](auto& o) -> auto& { return o.wall_alignment.rays_per_side; }, between(2, 100), "rays per side")
             .flag("intersecting_boxes_occlude", &O::intersecting_boxes_occlude,
                   "project option: false = boxes intersecting in 3D form a group that does not occlude itself in I_active (duplicates "
                   "become active, are skipped and purged); doc/results.md")

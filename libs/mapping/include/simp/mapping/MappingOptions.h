@@ -130,10 +130,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// brackets, smaller than the gap), plants. Measured per class in doc/results.md.
     std::map<std::string, double> class_wall_align_max_gap_m{{"board", 0.3}, {"cabinet", 0.3}, {"desk", 0.3},
                                                              {"oven", 0.3},  {"sink", 0.3},    {"table", 0.3}};
-    double wall_align_max_penetration_m = 0.3;  ///< m
-    double wall_align_max_yaw_rad = 0.2;        ///< rad
-    double wall_align_max_residual_m = 0.1;     ///< m
-    int wall_align_rays = 5;                    ///< rays per side
+    /// The alignment's other parameters, handed to alignToWalls whole (.ini keys wall_align_max_penetration_m,
+    /// wall_align_max_yaw_rad, wall_align_max_residual_m, wall_align_rays); its max_gap_m is the class's
+    /// entry of class_wall_align_max_gap_m.
+    WallAlignmentParams wall_alignment;
     /// The alignment parameters of a class; nullopt when the class is not aligned (or wall_align is
     /// off). With auto, the builder also checks its floor plan.
     std::optional<WallAlignmentParams> wallAlignmentOf(const std::string& class_name) const;
