@@ -121,13 +121,19 @@ TEST(Challenger, AFalseLostNeverHandsTheTrackToIt) {
     ASSERT_TRUE(lost) << "the scene must have made the state lost for this test to say anything";
     ASSERT_GE(loc.challengersStarted(), 1u);
     // Its own frames again, from where it stands (cut), with their odometry, time shifted by 5 s.
+    // The set is `localized` again soon, and every `localized` step is right. (Later `lost` steps in
+    // this world's detection-poor stretches are false ones of the state test, not of the track: the
+    // estimate stays right and no challenger may take over.)
+    double localized_again_s = -1;
     for (std::size_t f = cut; f < back + 150 && f < seq.frames.size(); ++f) {
         rec = loc.step(seq.frames[f].t_s + 5.0, seq.frames[f].odometry_increment, *seq.frames[f].observations);
         if (rec.state == LocalizationState::Localized) {
+            if (localized_again_s < 0) localized_again_s = seq.frames[f].t_s - seq.frames[cut].t_s;
             EXPECT_LT(translationError(rec.estimate, sc.groundtruth[f].pose), 0.3) << "at frame " << f;
         }
     }
-    EXPECT_EQ(rec.state, LocalizationState::Localized);
+    ASSERT_GE(localized_again_s, 0.0) << "never localized again on its own frames";
+    EXPECT_LE(localized_again_s, 5.0);
     EXPECT_EQ(loc.challengersWon(), 0u);
     EXPECT_LT(translationError(rec.estimate, sc.groundtruth[std::min(back + 149, seq.frames.size() - 1)].pose), 0.3);
 }

@@ -182,10 +182,11 @@ void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b
 void expectSame(const simp::maps::CObjectMap::TLikelihoodOptions& a,
                 const simp::maps::CObjectMap::TLikelihoodOptions& b) {
     SIMP_EXPECT_SAME(sensor_model);
-    EXPECT_TRUE(a.modelParams() == b.modelParams()) << "eta, m_p, skip_classes_without_noise, edt_*, noise range";
+    EXPECT_TRUE(a.modelParams() == b.modelParams()) << "eta, m_p, skip_classes_without_noise, edt_*, noise range, centre noise";
     SIMP_EXPECT_SAME(skip_classes_without_noise);
     SIMP_EXPECT_SAME(unmodelled_noise_std_m);
     SIMP_EXPECT_SAME(noise_reference_range_m);
+    SIMP_EXPECT_SAME(mp_centre_noise_floor);
     SIMP_EXPECT_SAME(default_confidence_threshold);
     for (const auto& name : simp::obs::defaultClassNames()) EXPECT_EQ(a.thresholdOf(name), b.thresholdOf(name)) << name;
 }

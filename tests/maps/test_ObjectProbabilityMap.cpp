@@ -1,6 +1,7 @@
 // m_p (Eqs. shiftdist, globaldist): the raster lookup against brute force over all objects.
 #include <gtest/gtest.h>
 #include <simp/maps/ObjectProbabilityMap.h>
+#include <simp/model/NoiseModel.h>
 
 #include "TestMaps.h"
 
@@ -142,6 +143,30 @@ TEST(ObjectProbabilityMap, UnmodelledClassGetsTheIsotropicDefault) {
         EXPECT_NEAR(d.sigma_y_m, 0.3, 1e-12);
     }
     opt.unmodelled_noise_std_m = -0.1;
+    EXPECT_THROW(ObjectProbabilityMap(data, opt), std::invalid_argument);
+}
+
+TEST(ObjectProbabilityMap, CentreNoiseFloorUsesEachModelWithoutItsFootprint) {
+    // centre_noise_floor = 0 keeps every object's model (the paper); > 0 builds each p_o from
+    // model::withoutFootprint(its model, its box, its noise source, floor): narrower, same centre.
+    const auto data = test::smallMap();
+    const ObjectProbabilityMap as_is(data, {});
+    ObjectProbabilityMap::Options opt;
+    opt.centre_noise_floor = 0.35;
+    const ObjectProbabilityMap centre(data, opt);
+    for (std::size_t i = 0; i < data.objects.size(); ++i) {
+        const auto& o = data.objects[i];
+        const auto expected = model::makeObjectDistribution(
+            o.box, model::withoutFootprint(*data.noiseOf(o), o.box, o.noiseSource(), 0.35), o.noiseSource());
+        const auto& a = as_is.distribution(i);
+        const auto& c = centre.distribution(i);
+        EXPECT_NEAR(c.sigma_x_m, expected.sigma_x_m, 1e-12) << "object " << o.id;
+        EXPECT_NEAR(c.sigma_y_m, expected.sigma_y_m, 1e-12) << "object " << o.id;
+        EXPECT_LT(c.sigma_min_m, a.sigma_min_m) << "object " << o.id;
+        EXPECT_TRUE(c.mean_world_m.isApprox(a.mean_world_m)) << "object " << o.id;
+        EXPECT_GT(c.probability(c.mean_world_m.x(), c.mean_world_m.y()), 0.99);
+    }
+    opt.centre_noise_floor = 1.5;
     EXPECT_THROW(ObjectProbabilityMap(data, opt), std::invalid_argument);
 }
 

@@ -14,9 +14,12 @@ namespace {
 
 using mrpt::math::TPose2D;
 
-CObjectMap makeMap(const world::ObjectMapData& data, SensorModelType type) {
+/// A map scoring with `type` and each noise model as given (the paper's equations;
+/// mp_centre_noise_floor = 0 unless `centre_noise_floor` says otherwise).
+CObjectMap makeMap(const world::ObjectMapData& data, SensorModelType type, double centre_noise_floor = 0.0) {
     CObjectMap map;
     map.likelihoodOptions.sensor_model = type;
+    map.likelihoodOptions.mp_centre_noise_floor = centre_noise_floor;
     map.setData(data);
     return map;
 }
@@ -78,6 +81,16 @@ TEST(SensorModelSimp, CombinedMatchesTheEquationsForAKnownShift) {
     EXPECT_NEAR(*map.detectionLogLikelihood(o, 0, TPose2D(dx, 0, 0)), std::log(p_o * std::exp(-1.0) + (1 - p_o) * eta), 1e-12);
     // Beyond the support (p_o < 1e-4 there): exactly eta.
     EXPECT_DOUBLE_EQ(*map.detectionLogLikelihood(o, 0, TPose2D(1.5, 0, 0)), std::log(eta));
+    // With the centre noise (mp_centre_noise_floor > 0, model::withoutFootprint) p_o has the model's
+    // std less the 0.5 m footprint's: sqrt(0.2^2 - 0.5^2 / 12) = 0.138 m along x (above the floor).
+    const auto centre = makeMap(data, SensorModelType::Simp, 0.35);
+    const double sigma_x = std::sqrt(0.2 * 0.2 - 0.5 * 0.5 / 12.0);
+    for (const double shift : {0.05, 0.1, 0.2, 0.3}) {
+        const double pc_o = std::exp(-0.5 * (shift / sigma_x) * (shift / sigma_x));
+        const double iou = (0.5 - shift) / (0.5 + shift);
+        const double p = pc_o * std::exp(-(1.0 - iou)) + (1.0 - pc_o) * eta;
+        EXPECT_NEAR(*centre.detectionLogLikelihood(o, 0, TPose2D(shift, 0, 0)), std::log(p), 1e-9) << "dx = " << shift;
+    }
     // Far outside the raster: defined as p_o = 0, so eta.
     EXPECT_DOUBLE_EQ(*map.detectionLogLikelihood(o, 0, TPose2D(-500, 800, 1.0)), std::log(eta));
 }
@@ -218,7 +231,7 @@ void expectSameAsTheValueType(const CObjectMap& map, const Model& model, const w
     std::vector<PreparedDetection> dets;
     for (std::size_t k = 0; k < o.size(); ++k) dets.push_back(*test::prepared(model, data, o, k));
     std::mt19937 rng(5);
-    std::uniform_real_distribution<double> ux(-2, 6), uy(-3, 4), uphi(-M_PI, M_PI), u(-0.3, 0.3);
+    std::uniform_real_distribution<double> ux(-2, 6), uy(-3, 4), uphi(-M_PI, M_PI), u(-0.2, 0.2);
     std::vector<TPose2D> poses;
     for (int i = 0; i < 400; ++i)  // global, then around the truth (most pairs on an object)
         poses.push_back(i < 200 ? TPose2D(ux(rng), uy(rng), uphi(rng)) : TPose2D(kTruth.x + u(rng), kTruth.y + u(rng), kTruth.phi + u(rng)));
@@ -241,12 +254,14 @@ TEST(SensorModelSelection, TheIniKeySelectsTheValueTypeWithItsParameters) {
         SCOPED_TRACE(name);
         mrpt::config::CConfigFileMemory ini("[L]\nsensor_model = " + name +
                                             "\neta = 0.2\nnoise_reference_range_m = 1.5\nmp_resolution_m = 0.04\n"
-                                            "edt_sigma_m = 0.4\nedt_resolution_m = 0.04\n");
+                                            "edt_sigma_m = 0.4\nedt_resolution_m = 0.04\n"
+                                            "mp_centre_noise_floor = 0.3\n");
         CObjectMap map;
         map.likelihoodOptions.loadFromConfigFile(ini, "L");
         map.setData(data);
         ObjectProbabilityMap::Options mp;
         mp.resolution_m = 0.04;
+        mp.centre_noise_floor = 0.3;
         if (name == "simp") expectSameAsTheValueType(map, SimpSensorModel(data, {0.2, mp, 1.5}), data);
         if (name == "d") expectSameAsTheValueType(map, CentreSensorModel(data, {0.2, mp, 1.5}), data);
         if (name == "o") expectSameAsTheValueType(map, OverlapSensorModel(data, {0.2}), data);

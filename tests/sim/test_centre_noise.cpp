@@ -55,8 +55,8 @@ TEST(SimCentreNoise, FloorsWhereTheExtentExplainsTheSpreadAndKeepsTheShape) {
     simp::sim::DetectorParams p;
     p.min_centre_noise_fraction = 0.25;
     const auto c = simp::sim::centreNoiseOf(m, o, p);
-    const Eigen::Matrix2d model_cov = simp::sim::offsetCovariance(m);  // 0.09 * E[r^2] / 2 = 0.09 * 0.40 per axis
-    const Eigen::Matrix2d centre_cov = simp::sim::offsetCovariance(c);
+    const Eigen::Matrix2d model_cov = simp::model::offsetCovariance(m);  // 0.09 * E[r^2] / 2 = 0.09 * 0.40 per axis
+    const Eigen::Matrix2d centre_cov = simp::model::offsetCovariance(c);
     EXPECT_NEAR(centre_cov(0, 0), model_cov(0, 0) - 0.3 * 0.3 / 12, 1e-9);
     EXPECT_NEAR(centre_cov(1, 1), 0.25 * 0.25 * model_cov(1, 1), 1e-9);
     EXPECT_EQ(c.exponent_b, 4.0);

@@ -48,7 +48,7 @@ void checkNoiseModel(const simp::model::NoiseModel& m, std::uint64_t seed) {
         mean += x;
     }
     mean /= n;
-    const Eigen::Matrix2d expected_cov = simp::sim::offsetCovariance(m);
+    const Eigen::Matrix2d expected_cov = simp::model::offsetCovariance(m);
     for (int k = 0; k < 2; ++k) EXPECT_NEAR(mean[k], m.mean_m[k], 4 * std::sqrt(expected_cov(k, k) / n)) << "mean " << k;
     for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) {
@@ -69,7 +69,7 @@ TEST(SimRandom, GaussianNoiseModelMeanAndCovariance) {
     m.mean_m = {-0.06, 0.05};
     m.cov_m2 << 0.04, 0.012, 0.012, 0.09;
     m.exponent_b = 2.0;
-    EXPECT_TRUE(simp::sim::offsetCovariance(m).isApprox(m.cov_m2));
+    EXPECT_TRUE(simp::model::offsetCovariance(m).isApprox(m.cov_m2));
     checkNoiseModel(m, 11);
 }
 
@@ -79,7 +79,7 @@ TEST(SimRandom, FlatGeneralizedGaussianMeanAndCovariance) {
     m.cov_m2 << 0.1, -0.02, -0.02, 0.03;
     m.exponent_b = 4.0;
     // E[r^2] / 2 for b = 4 is sqrt(2) * Gamma(1) / Gamma(1/2) / 2 = 1 / sqrt(2 pi)
-    EXPECT_NEAR(simp::sim::offsetCovariance(m)(0, 0), 0.1 / std::sqrt(2 * M_PI), 1e-12);
+    EXPECT_NEAR(simp::model::offsetCovariance(m)(0, 0), 0.1 / std::sqrt(2 * M_PI), 1e-12);
     checkNoiseModel(m, 12);
 }
 

@@ -49,6 +49,8 @@ const io::OptionTable<CObjectMap::TLikelihoodOptions>& CObjectMap::TLikelihoodOp
             .flag("skip_classes_without_noise", &O::skip_classes_without_noise, "true: ignore classes without a noise model instead of throwing (see \"Bad input\")")
             .number("unmodelled_noise_std_m", &O::unmodelled_noise_std_m, "m", ValueRange::atLeast(0),
                     "> 0: isotropic noise of objects without a noise model; 0 = skipped (the paper)")
+            .number("mp_centre_noise_floor", &O::mp_centre_noise_floor, "", ValueRange::between(0, 1),
+                    "> 0: each noise model less its object's footprint (a centre noise), floored at this fraction of its std; 0 = as is (the paper)")
             .number("edt_sigma_m", &O::edt_sigma_m, "m", ValueRange::positive(), "EDT baseline: sigma of the centre distance; 6 px at 0.05 m, HSMCL's sigma_obs in the paper's Table")
             .number("edt_max_distance_m", &O::edt_max_distance_m, "m", ValueRange::positive(), "EDT baseline: distance clamp")
             .number("edt_resolution_m", &O::edt_resolution_m, "m", ValueRange::positive(), "EDT baseline: raster cell")
@@ -76,6 +78,7 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     p.mp.min_probability = mp_min_probability;
     p.mp.skip_classes_without_noise = skip_classes_without_noise;
     p.mp.unmodelled_noise_std_m = unmodelled_noise_std_m;
+    p.mp.centre_noise_floor = mp_centre_noise_floor;
     p.edt_sigma_m = edt_sigma_m;
     p.edt_max_distance_m = edt_max_distance_m;
     p.edt_resolution_m = edt_resolution_m;

@@ -1,5 +1,6 @@
 #include <simp/maps/ObjectProbabilityMap.h>
 #include <simp/model/NoiseFrame.h>
+#include <simp/model/NoiseModel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,8 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
         throw std::invalid_argument("object probability map: resolution must be > 0 m");
     if (!(options.unmodelled_noise_std_m >= 0.0) || !std::isfinite(options.unmodelled_noise_std_m))
         throw std::invalid_argument("object probability map: unmodelled_noise_std_m must be >= 0 m (0 = none)");
+    if (!(options.centre_noise_floor >= 0.0 && options.centre_noise_floor <= 1.0))
+        throw std::invalid_argument("object probability map: centre_noise_floor must be in [0, 1] (0 = the model as is)");
     const std::size_t num_classes = data.class_names.size();
     m_classes.resize(num_classes);
     m_distributions.resize(data.objects.size());
@@ -34,6 +37,9 @@ ObjectProbabilityMap::ObjectProbabilityMap(const world::ObjectMapData& data, con
             throw std::invalid_argument("object map: " + objectWhere(data, i) + " has class id " +
                                         std::to_string(obj.class_id) + " outside the class list");
         auto noise = data.noiseOf(obj);
+        // Only a model from the map is a footprint fit; the isotropic default below is a centre noise.
+        if (noise && options.centre_noise_floor > 0.0)
+            noise = model::withoutFootprint(*noise, obj.box, obj.noiseSource(), options.centre_noise_floor);
         if (!noise && options.unmodelled_noise_std_m > 0.0) {
             noise = model::NoiseModel{};
             noise->cov_m2 = Eigen::Matrix2d::Identity() * options.unmodelled_noise_std_m * options.unmodelled_noise_std_m;

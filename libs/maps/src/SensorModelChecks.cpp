@@ -14,6 +14,8 @@ void checkProbabilityMapOptions(const ObjectProbabilityMap::Options& mp) {
     if (!(mp.resolution_m > 0.0)) throw std::invalid_argument("mp_resolution_m must be > 0");
     if (!(mp.min_probability > 0.0 && mp.min_probability < 1.0))
         throw std::invalid_argument("mp_min_probability must be in (0, 1)");
+    if (!(mp.centre_noise_floor >= 0.0 && mp.centre_noise_floor <= 1.0))
+        throw std::invalid_argument("mp_centre_noise_floor must be in [0, 1] (0 = the model as is)");
 }
 
 void checkNoiseReferenceRange(double noise_reference_range_m) {

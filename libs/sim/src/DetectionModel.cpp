@@ -36,20 +36,7 @@ model::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObje
 
 model::NoiseModel centreNoiseOf(const model::NoiseModel& model, const world::MapObject& o, const DetectorParams& p) {
     if (!p.noise_model_includes_extent) return model;
-    // The footprint's covariance (uniform box, box frame) expressed in the model's frame.
-    const Eigen::Rotation2Dd R(geometry::yawOf(o.box) - model::noiseFrameYaw(o.box, o.noiseSource()));
-    const Eigen::Vector2d side = o.box.size.head<2>();
-    const Eigen::Matrix2d extent = R.toRotationMatrix() * (side.cwiseProduct(side) / 12.0).asDiagonal() *
-                                   R.toRotationMatrix().transpose();
-    const Eigen::Matrix2d spread = offsetCovariance(model);
-    Eigen::Vector2d scale;
-    for (int i = 0; i < 2; ++i) {
-        const double floor2 = p.min_centre_noise_fraction * p.min_centre_noise_fraction * spread(i, i);
-        scale[i] = std::sqrt(std::max(spread(i, i) - extent(i, i), floor2) / spread(i, i));
-    }
-    model::NoiseModel out = model;
-    out.cov_m2 = scale.asDiagonal() * model.cov_m2 * scale.asDiagonal();
-    return out;
+    return model::withoutFootprint(model, o.box, o.noiseSource(), p.min_centre_noise_fraction);
 }
 
 geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const Eigen::Isometry3d& T_camera_world) {

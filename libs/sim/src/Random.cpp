@@ -67,10 +67,4 @@ Eigen::Vector2d sampleCentreOffset(const model::NoiseModel& model, Rng& rng) {
     return model.mean_m + L * Eigen::Vector2d(r * std::cos(a), r * std::sin(a));
 }
 
-Eigen::Matrix2d offsetCovariance(const model::NoiseModel& model) {
-    const double b = model.exponent_b;
-    const double e_r2 = std::pow(2.0, 2.0 / b) * std::tgamma(4.0 / b) / std::tgamma(2.0 / b);
-    return model.cov_m2 * (e_r2 / 2.0);
-}
-
 }  // namespace simp::sim

@@ -21,7 +21,7 @@
 namespace simp::localization {
 
 struct HypothesisSearchParams {
-    bool enabled = false;                 ///< true: search (measured not better yet: doc/results-localization.md)
+    bool enabled = true;                  ///< true: search (doc/localization.md "Hypothesis search")
     std::size_t min_window_detections = 5; ///< fewer detections in the window: no search
     std::size_t max_candidates = 4000;    ///< exact fits scored per search (the first ones)
     /// Also fits of pairs of window detections on pairs of map objects (DetectionPoseSampler::pairFits),
@@ -34,7 +34,7 @@ struct HypothesisSearchParams {
     double distinct_distance_m = 1.0;     ///< poses farther apart than this (m) ...
     double distinct_heading_rad = 0.5;    ///< ... or turned more than this (rad) are distinct places
     std::size_t max_hypotheses = 4;       ///< distinct poses kept
-    bool while_global = false;            ///< also search while `global` (the first search)
+    bool while_global = true;             ///< also search while `global` (the first search)
     bool while_localized = false;         ///< also search while `localized` (rival test for `lost`) ...
     double check_period_s = 1.0;          ///< ... at most this often (s); always while `lost`
 };

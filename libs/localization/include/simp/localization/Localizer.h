@@ -73,7 +73,7 @@ struct ChallengerParams {
     /// It replaces the current set at a distinct place only when the current estimate explains at
     /// most this share of the window: a kidnapped estimate explains next to nothing, an estimate
     /// made `lost` by moved furniture still explains part (1: no such condition).
-    double replace_max_fit = 0.25;
+    double replace_max_fit = 0.1;
 };
 
 /// Everything the localizer reads from the .ini.

@@ -78,6 +78,11 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         /// of this std (m) instead of being skipped; 0 = none (the paper). Not serialized (like
         /// noise_reference_range_m): it comes from the .ini.
         double unmodelled_noise_std_m = 0.0;
+        /// > 0: each object's noise model without its own footprint (model::withoutFootprint: the
+        /// authors' models are fitted to heatmaps of detected footprints, not to centres), floored
+        /// at this fraction of its std; 0 = the model as is (the paper). Not serialized (like
+        /// noise_reference_range_m): it comes from the .ini.
+        double mp_centre_noise_floor = 0.35;
         double edt_sigma_m = 0.3;          ///< EDT baseline: std. dev. of the centre distance (m)
         double edt_max_distance_m = 2.0;   ///< EDT baseline: distance clamp (m)
         double edt_resolution_m = 0.05;    ///< EDT baseline: raster cell (m)

@@ -22,6 +22,9 @@ class ObjectProbabilityMap {
         /// > 0: an object with neither its own nor its class's noise model gets an isotropic
         /// Gaussian of this std (m) instead (then skip_classes_without_noise does not apply).
         double unmodelled_noise_std_m = 0.0;
+        /// 0 = each object's noise model as is (the paper's). > 0: the model's spread minus the
+        /// object's own footprint (model::withoutFootprint), floored at this fraction of its std.
+        double centre_noise_floor = 0.0;
     };
 
     /// The result of Eq. globaldist at a point.

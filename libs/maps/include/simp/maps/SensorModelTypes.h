@@ -30,7 +30,8 @@ struct SensorModelParams {
         return type == o.type && eta == o.eta && mp.resolution_m == o.mp.resolution_m &&
                mp.min_probability == o.mp.min_probability &&
                mp.skip_classes_without_noise == o.mp.skip_classes_without_noise &&
-               mp.unmodelled_noise_std_m == o.mp.unmodelled_noise_std_m && edt_sigma_m == o.edt_sigma_m &&
+               mp.unmodelled_noise_std_m == o.mp.unmodelled_noise_std_m &&
+               mp.centre_noise_floor == o.mp.centre_noise_floor && edt_sigma_m == o.edt_sigma_m &&
                edt_max_distance_m == o.edt_max_distance_m && edt_resolution_m == o.edt_resolution_m &&
                noise_reference_range_m == o.noise_reference_range_m;
     }

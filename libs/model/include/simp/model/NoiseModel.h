@@ -4,6 +4,8 @@
 /// "Statistical Analysis", Eq. perclassdist). Its frame is NoiseFrame.h's.
 
 #include <Eigen/Core>
+#include <simp/geometry/Box3D.h>
+#include <simp/model/NoiseFrame.h>
 
 namespace simp::model {
 
@@ -20,5 +22,17 @@ struct NoiseModel {
     /// True when all numbers are finite, Sigma is symmetric positive definite and b > 0.
     bool isValid() const;
 };
+
+/// Covariance of the offsets the model describes: Sigma * E[r^2] / 2 with
+/// E[r^2] = 2^(2/b) Gamma(4/b) / Gamma(2/b) (equals Sigma for b = 2).
+Eigen::Matrix2d offsetCovariance(const NoiseModel& model);
+
+/// The centre noise hidden in a model fitted to rasterized detected *footprints* (the authors'
+/// heatmaps, doc/simulator.md "Which noise model"): per axis i of the model's frame, the model's
+/// variance (offsetCovariance()) minus that of a uniform footprint of `box` along the axis
+/// (side^2 / 12), floored at (min_std_fraction * the model's std)^2; applied by scaling Sigma
+/// (b and mu kept). `source` says which frame the model is in (noiseFrameYaw()).
+NoiseModel withoutFootprint(const NoiseModel& model, const geometry::Box3D& box, NoiseSource source,
+                            double min_std_fraction);
 
 }  // namespace simp::model

@@ -21,10 +21,8 @@ namespace simp::sim {
 model::NoiseModel noiseFor(const world::ObjectMapData& map, const world::MapObject& o, const DetectorParams& p);
 
 /// The centre noise of detections of `o` given its noise model `model` (noiseFor()): `model` itself
-/// unless p.noise_model_includes_extent; then, per axis i of the model's frame, the covariance
-/// of the model's shape (offsetCovariance()) minus the variance of a uniform footprint of the
-/// object along that axis (side^2 / 12), floored at (min_centre_noise_fraction * model std)^2,
-/// applied by scaling Sigma (the shape b and the mean mu are kept).
+/// unless p.noise_model_includes_extent; then model::withoutFootprint(model, o's box, o's noise
+/// source, min_centre_noise_fraction).
 model::NoiseModel centreNoiseOf(const model::NoiseModel& model, const world::MapObject& o, const DetectorParams& p);
 
 /// An upright world box (local z up) as a camera-frame box with the detector's axis convention
@@ -38,7 +36,7 @@ geometry::Box3D worldBoxToCamera(const geometry::Box3D& upright_world_box, const
 /// viewpoint cell), so it repeats for similar viewpoints; e_frame comes from `rng`. Then the
 /// deviation's component along the horizontal viewing ray is scaled by distance /
 /// reference_distance_m (depth error of a monocular detector). At the reference distance the
-/// offset has the model's mean and covariance (offsetCovariance()).
+/// offset has the model's mean and covariance (model::offsetCovariance()).
 Eigen::Vector2d centreOffsetInWorld(const camera::PinholeCamera& view, const world::MapObject& o, const model::NoiseModel& noise,
                                     const DetectorParams& p, std::uint64_t noise_seed, Rng& rng);
 

@@ -40,11 +40,8 @@ class Rng {
 /// Draws a detected box centre offset (m) in the object's ground frame from `model`:
 /// density exp(-0.5 m^b) with m the Mahalanobis distance for Sigma, shifted by mu
 /// (paper Eq. perclassdist; b = 2 is the Gaussian). Sampled exactly: the radius r in whitened
-/// space has 0.5 r^b ~ Gamma(2/b, 1), the direction is uniform.
+/// space has 0.5 r^b ~ Gamma(2/b, 1), the direction is uniform. Its covariance is
+/// model::offsetCovariance(model).
 Eigen::Vector2d sampleCentreOffset(const model::NoiseModel& model, Rng& rng);
-
-/// Covariance of sampleCentreOffset() for `model`: Sigma * E[r^2] / 2 with
-/// E[r^2] = 2^(2/b) Gamma(4/b) / Gamma(2/b) (equals Sigma for b = 2).
-Eigen::Matrix2d offsetCovariance(const model::NoiseModel& model);
 
 }  // namespace simp::sim
