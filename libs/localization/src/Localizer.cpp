@@ -1,4 +1,5 @@
 #include <simp/localization/Localizer.h>
+#include <simp/localization/Angle.h>
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -481,7 +482,10 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     // must explain them better by win_margin.
     std::vector<double> log_lik;
     m_since_lost.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
-    const bool near = (ch_now.asTPose() - now.asTPose()).norm() <= c.agree_distance_m;
+    // The same place is the same position and heading: a challenger turned by more than the
+    // search's distinct_heading_rad is elsewhere (a right position with a wrong heading drifts off).
+    const bool near = std::hypot(ch_now.x() - now.x(), ch_now.y() - now.y()) <= c.agree_distance_m &&
+                      std::abs(wrapToPi(ch_now.phi() - now.phi())) <= m_opts.search.distinct_heading_rad;
     ch.lead = log_lik[1] - log_lik[0];
     if (ch.lead < (near ? 0.0 : c.win_margin)) return false;
     if (!near && c.replace_max_fit < 1.0 &&
