@@ -99,6 +99,21 @@ TEST(HypothesisSearch, FindsTheTruePlaceFromTheWindow) {
     EXPECT_GT(search.rivalAdvantage(wk.window, hyps, wrong, wk.odometry_now), StateParams{}.rival_lost_margin);
 }
 
+TEST(HypothesisSearch, ThePlaceIsPositionAndHeading) {
+    // samePlace: within the distance and the turn (wrapped); the challenger's "near" (agree_distance_m
+    // with the search's distinct_heading_rad) and the search's distinct places both use it.
+    using mrpt::math::TPose2D;
+    const TPose2D p(2.0, 1.0, 0.3);
+    EXPECT_TRUE(samePlace(p, p, 1.0, 0.5));
+    EXPECT_TRUE(samePlace(p, TPose2D(2.0, 2.0, 0.3), 1.0, 0.5));  // 1.0 m apart: the bound is inclusive
+    EXPECT_FALSE(samePlace(p, TPose2D(2.0, 2.01, 0.3), 1.0, 0.5));
+    EXPECT_TRUE(samePlace(p, TPose2D(2.0, 1.0, 0.7), 1.0, 0.5));
+    // The same position turned by 122 deg (the challenger that replaced a right set in the authors'
+    // office, twenty-first session) is another place.
+    EXPECT_FALSE(samePlace(p, TPose2D(2.0, 1.0, 0.3 + 122.0 * M_PI / 180.0), 1.0, 0.5));
+    EXPECT_TRUE(samePlace(TPose2D(0, 0, 3.1), TPose2D(0, 0, -3.1), 1.0, 0.5));  // 0.08 rad across +-pi
+}
+
 TEST(HypothesisSearch, NeedsAWindowAndCanBeTurnedOff) {
     const SearchWorld sw;
     const auto& [w, map, free_space, sampler] = sw;

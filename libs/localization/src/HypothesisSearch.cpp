@@ -24,9 +24,13 @@ HypothesisSearch::HypothesisSearch(const maps::CObjectMap& map, const DetectionP
                                    const HypothesisSearchParams& params)
     : m_map(map), m_sampler(sampler), m_params(params) {}
 
+bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double max_distance_m, double max_turn_rad) {
+    return std::hypot(a.x - b.x, a.y - b.y) <= max_distance_m &&
+           std::abs(mrpt::math::wrapToPi(a.phi - b.phi)) <= max_turn_rad;
+}
+
 bool HypothesisSearch::distinct(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b) const {
-    return std::hypot(a.x - b.x, a.y - b.y) > m_params.distinct_distance_m ||
-           std::abs(mrpt::math::wrapToPi(a.phi - b.phi)) > m_params.distinct_heading_rad;
+    return !samePlace(a, b, m_params.distinct_distance_m, m_params.distinct_heading_rad);
 }
 
 std::vector<Hypothesis> HypothesisSearch::search(const FitWindow& window,

@@ -1,5 +1,4 @@
 #include <simp/localization/Localizer.h>
-#include <simp/localization/Angle.h>
 
 #include <mrpt/core/bits_math.h>
 #include <mrpt/obs/CActionCollection.h>
@@ -484,8 +483,7 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     m_since_lost.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
     // The same place is the same position and heading: a challenger turned by more than the
     // search's distinct_heading_rad is elsewhere (a right position with a wrong heading drifts off).
-    const bool near = std::hypot(ch_now.x() - now.x(), ch_now.y() - now.y()) <= c.agree_distance_m &&
-                      std::abs(wrapToPi(ch_now.phi() - now.phi())) <= m_opts.search.distinct_heading_rad;
+    const bool near = samePlace(ch_now.asTPose(), now.asTPose(), c.agree_distance_m, m_opts.search.distinct_heading_rad);
     ch.lead = log_lik[1] - log_lik[0];
     if (ch.lead < (near ? 0.0 : c.win_margin)) return false;
     if (!near && c.replace_max_fit < 1.0 &&

@@ -39,6 +39,10 @@ struct HypothesisSearchParams {
     double check_period_s = 1.0;          ///< ... at most this often (s); always while `lost`
 };
 
+/// Two robot poses are the same place when they are at most `max_distance_m` apart and turned by at
+/// most `max_turn_rad` (wrapped): a right position with a wrong heading is another place.
+bool samePlace(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double max_distance_m, double max_turn_rad);
+
 struct Hypothesis {
     mrpt::math::TPose2D pose;   ///< robot pose now (world)
     double log_likelihood = 0;  ///< of the fit window at the pose (nats)
