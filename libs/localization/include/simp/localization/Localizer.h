@@ -45,7 +45,8 @@ struct SensorResettingParams {
 /// the start, `reset_fraction` of it reset from the detections at each update) beside the current
 /// one. Both are updated with the same odometry and detections. The challenger replaces the current
 /// set when its own state is `localized` and it is either within `agree_distance_m` of the current
-/// estimate (the same place, better told) or explains the detections seen since `lost` (the fit
+/// estimate and turned by at most the search's `distinct_heading_rad` (samePlace: the same place,
+/// better told) or explains the detections seen since `lost` (the fit
 /// window) better than the current estimate by `win_margin` nats. It is dropped when the current set
 /// is `localized` again (the `lost` was false). A false `lost` thus costs CPU, never the track (a
 /// restart on `lost` lost 9 of 16 tracking runs, doc/results-localization.md).
