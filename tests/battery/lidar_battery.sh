@@ -4,7 +4,9 @@
 # $CHANGES changed objects, $DURATION s, the simulated LiDAR (--lidar) and $CAMERAS cameras (a copy of
 # config_ini/sim.ini with [cameras] count changed; 4 = the shipped rig); each localized globally with every
 # method of $METHODS ($CONFIG, $PARTICLES particles, seed 1). Scored by tests/battery/analyze_runs.py
-# (simp-eval traj), grouped as method/cameras; --runs prints one row per run.
+# (simp-eval traj), grouped as method/cameras; --runs prints one row per run. KIDNAP_AT=SEC: the sequences
+# teleport the robot once at SEC (simp-sim --kidnap-at; directories q_..._k); the kidnap columns score the
+# recovery.
 # Runs $JOBS processes at once. Same inputs, same output.
 #   bash tests/battery/lidar_battery.sh OUT
 set -euo pipefail
@@ -20,6 +22,7 @@ PARTICLES=${PARTICLES:-5000}
 JOBS=${JOBS:-2}
 AUTHORS=${AUTHORS:-../shared/data/simp-office}
 CONFIG=${CONFIG:-config_ini/simp.ini}
+KIDNAP_AT=${KIDNAP_AT:-}
 TAG=${TAG:-$(basename "$CONFIG" .ini)}
 mkdir -p "$OUT"
 worlds=()
@@ -42,8 +45,8 @@ jobs_file="$OUT/jobs_$TAG.txt"; : > "$jobs_file"
 runs_file="$OUT/runs_$TAG.tsv"; : > "$runs_file"
 for w in "${worlds[@]}"; do
   for s in $SEQ_SEEDS; do
-    Q="$OUT/q_${w}_cam${CAMERAS}_s$s"
-    [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $OUT/w_$w --seed $s --out $Q --config $simcfg --duration $DURATION --changes $CHANGES --lidar >/dev/null 2>&1" >> "$sim_jobs"
+    Q="$OUT/q_${w}_cam${CAMERAS}_s$s${KIDNAP_AT:+_k}"
+    [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $OUT/w_$w --seed $s --out $Q --config $simcfg --duration $DURATION --changes $CHANGES --lidar ${KIDNAP_AT:+--kidnap-at $KIDNAP_AT} >/dev/null 2>&1" >> "$sim_jobs"
     for m in $METHODS; do
       O="$OUT/r_${TAG}_${m}_$(basename "$Q")"
       echo "$B/simp-localize --world $OUT/w_$w --rawlog $Q/sequence.rawlog --out $O --config $CONFIG --method '$m' --particles $PARTICLES --seed 1 --quiet >/dev/null 2>&1" >> "$jobs_file"

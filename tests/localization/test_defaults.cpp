@@ -169,6 +169,10 @@ void expectSame(const LidarModelOptions& a, const LidarModelOptions& b) {
     SIMP_EXPECT_SAME(z_random);
     SIMP_EXPECT_SAME(max_range_m);
     SIMP_EXPECT_SAME(max_corr_distance_m);
+    SIMP_EXPECT_SAME(min_range_m);
+    SIMP_EXPECT_SAME(beam_skip_distance_m);
+    SIMP_EXPECT_SAME(beam_skip_threshold);
+    SIMP_EXPECT_SAME(beam_skip_max_fraction);
     SIMP_EXPECT_SAME(map_objects);
 }
 

@@ -2,6 +2,8 @@
 // (`simp-localize --method lidar|simp+lidar`): a scan from the true pose, fusion where each source
 // alone is ambiguous, and a rawlog without scans.
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/ScanLikelihood.h>
 #include <simp/obs/ObjectClasses.h>
@@ -43,14 +45,20 @@ simp::world::World symmetricRoom() {
     return w;
 }
 
+/// The simulated scan (1 cm range noise) of world `w` from `pose`: walls and the objects spanning the scan plane.
+mrpt::obs::CObservation2DRangeScan simulatedScan(const simp::world::World& w, const mrpt::math::TPose2D& pose, int seed) {
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.01;
+    simp::sim::LidarSimulator lidar(w, p);
+    simp::sim::Rng rng(seed);
+    return lidar.scan(pose, {}, 0.0, rng);
+}
+
+/// The scan of the walls alone.
 mrpt::obs::CObservation2DRangeScan scanFrom(const simp::world::World& w, const mrpt::math::TPose2D& pose) {
     simp::world::World walls_only = w;
     walls_only.objects.objects.clear();
-    simp::sim::LidarParams p;
-    p.range_std_m = 0.01;
-    simp::sim::LidarSimulator lidar(walls_only, p);
-    simp::sim::Rng rng(3);
-    return lidar.scan(pose, {}, 0.0, rng);
+    return simulatedScan(walls_only, pose, 3);
 }
 
 }  // namespace
@@ -124,6 +132,7 @@ TEST(ScanLikelihood, MapObjectsSpanningTheScanPlaneExplainTheirReturns) {
     o.weight = 1.0;
     o.sigma_m = 0.15;
     o.max_corr_distance_m = 0.3;
+    o.beam_skip_threshold = 0;  // every return weighed: the contrast is what the objects in the grid explain
     ScanLikelihood plain(w.floorplan, o), with_objects(w.floorplan, o, &w.objects);
     const std::vector<mrpt::math::TPose2D> poses{truth, {3.15, 2.5, 0.2}, {2.85, 2.5, 0.2}, {3.0, 2.65, 0.2}, {3.0, 2.5, 0.3}};
     std::vector<double> lp(poses.size()), lo(poses.size());
@@ -134,6 +143,122 @@ TEST(ScanLikelihood, MapObjectsSpanningTheScanPlaneExplainTheirReturns) {
     // the returns of the furniture are explained: the true pose scores much higher with the objects
     EXPECT_GT(lo[0], lp[0] + 10.0) << lo[0] << " vs " << lp[0];
     for (std::size_t i = 1; i < poses.size(); ++i) EXPECT_GT(lo[0], lo[i] + 2.0) << "pose " << i;
+}
+
+namespace {
+
+/// Poses on a grid about `centre`: +-0.15 m in x and y, +-0.05 rad (the spread of a tracking set).
+std::vector<mrpt::math::TPose2D> cloudAbout(const mrpt::math::TPose2D& centre) {
+    std::vector<mrpt::math::TPose2D> poses;
+    for (int i = -3; i <= 3; ++i)
+        for (int j = -3; j <= 3; ++j)
+            for (int k = -2; k <= 2; ++k) poses.push_back({centre.x + 0.05 * i, centre.y + 0.05 * j, centre.phi + 0.025 * k});
+    return poses;
+}
+
+/// The room's LiDAR scan from `pose`, cabinets included (the scan sees them; a model without objects does not).
+mrpt::obs::CObservation2DRangeScan scanWithCabinets(const simp::world::World& w, const mrpt::math::TPose2D& pose) {
+    return simulatedScan(w, pose, 7);
+}
+
+}  // namespace
+
+TEST(ScanLikelihood, ReturnsInsideTheRobotFootprintAreNotWeighed) {
+    const auto w = symmetricRoom();
+    const mrpt::math::TPose2D truth{3.0, 2.0, 0.3};
+    const auto scan = scanFrom(w, truth);
+    LidarModelOptions o;
+    o.weight = 1.0;
+    o.beam_skip_threshold = 0;  // the range rule alone
+    ScanLikelihood model(w.floorplan, o);
+    const std::vector<mrpt::math::TPose2D> poses{truth, {3.3, 2.0, 0.3}, {0.3, 0.3, 0.0}};
+    // a person across the sensor: every return 2-5 cm; nothing is weighed (the plain field preferred a pose in a wall)
+    auto blocked = scan;
+    for (std::size_t i = 0; i < blocked.getScanSize(); ++i) blocked.setScanRange(i, 0.02f + 0.03f * static_cast<float>(i % 2));
+    std::vector<double> log(poses.size(), -1.0);
+    model.logLikelihoods(blocked, poses.data(), poses.size(), log.data());
+    for (const double l : log) EXPECT_EQ(l, 0.0);
+    // short returns count as absent: the same value as the scan with those returns invalid
+    auto partly = scan, without = scan;
+    for (std::size_t i = 100; i < 400; ++i) {
+        partly.setScanRange(i, 0.25f);
+        without.setScanRangeValidity(i, false);
+    }
+    std::vector<double> a(poses.size()), b(poses.size());
+    model.logLikelihoods(partly, poses.data(), poses.size(), a.data());
+    model.logLikelihoods(without, poses.data(), poses.size(), b.data());
+    for (std::size_t i = 0; i < poses.size(); ++i) EXPECT_DOUBLE_EQ(a[i], b[i]) << "pose " << i;
+    EXPECT_GT(a[0], a[1] + 1.0);
+}
+
+TEST(ScanLikelihood, ReturnsTheMapDoesNotExplainAreSkipped) {
+    const auto w = symmetricRoom();  // the scan sees two cabinets; the model's grid has walls only
+    const mrpt::math::TPose2D truth{3.0, 2.0, 0.0};  // cabinet 1 (0.5 x 1.0 m) 1.75 m ahead, cabinet 2 behind it
+    const auto scan = scanWithCabinets(w, truth);
+    const auto cloud = cloudAbout(truth);
+    LidarModelOptions o;
+    o.weight = 1.0;
+    ScanLikelihood walls_only(w.floorplan, o), with_objects(w.floorplan, o, &w.objects);
+    std::vector<double> log(cloud.size());
+    walls_only.logLikelihoods(scan, cloud.data(), cloud.size(), log.data());
+    // cabinet 1's front (1.0 m wide at 1.75 m: ~32 deg of 270, ~130 of 1081 returns) and the part of
+    // cabinet 2 it does not hide are explained at no pose of the set; the walls at almost all
+    const std::size_t skipped = walls_only.lastSkipped();
+    EXPECT_GT(skipped, 100u);
+    EXPECT_LT(skipped, 300u);
+    // with the cabinets in the grid every return is explained: none is skipped
+    with_objects.logLikelihoods(scan, cloud.data(), cloud.size(), log.data());
+    EXPECT_EQ(with_objects.lastSkipped(), 0u);
+    // a set where nothing is explained (off the plan): skipping would leave nothing to weigh, so none is skipped
+    const auto wrong = cloudAbout({40.0, 30.0, 1.2});
+    std::vector<double> wrong_log(wrong.size());
+    walls_only.logLikelihoods(scan, wrong.data(), wrong.size(), wrong_log.data());
+    EXPECT_EQ(walls_only.lastSkipped(), 0u);
+    // off: nothing skipped
+    o.beam_skip_threshold = 0;
+    ScanLikelihood no_skip(w.floorplan, o);
+    no_skip.logLikelihoods(scan, cloud.data(), cloud.size(), log.data());
+    EXPECT_EQ(no_skip.lastSkipped(), 0u);
+}
+
+TEST(ScanLikelihood, SkippingTakesAwayThePullOfUnmappedFurniture) {
+    // A cabinet row the map lacks along the bottom wall (8 m long, its front 0.55 m from the wall): from
+    // (5, 2) facing +x, about 46 of the 109 weighed returns end on it. A pose moved 0.55 m toward the row
+    // puts them on the bottom wall (and the top wall's 4 m away off it). Unskipped, the row's returns
+    // narrow the truth's lead over that pose; skipped (explained at none of a tracking set's poses),
+    // they weigh nothing: the lead grows by what they cost, and the truth is the set's best pose.
+    auto w = symmetricRoom();
+    auto& m = w.objects.objects;
+    m.clear();
+    simp::world::MapObject row;
+    row.id = 1;
+    row.class_id = simp::obs::classIndexOf(w.objects.class_names, "cabinet");
+    row.box = simp::geometry::makeUprightBox({5.0, 0.4, 0.9}, {8.0, 0.3, 1.8}, 0.0);
+    m.push_back(row);
+    const mrpt::math::TPose2D truth{5.0, 2.0, 0.0}, pulled{5.0, 1.45, 0.0};
+    const auto scan = scanWithCabinets(w, truth);
+    auto poses = cloudAbout(truth);
+    poses.push_back(pulled);
+    const auto truth_at = static_cast<std::size_t>(std::find_if(poses.begin(), poses.end(), [&](const auto& p) {
+                                                      return p.x == truth.x && p.y == truth.y && p.phi == truth.phi;
+                                                  }) - poses.begin());
+    ASSERT_LT(truth_at, poses.size());
+    LidarModelOptions o;
+    o.weight = 1.0;
+    std::vector<double> log(poses.size());
+    o.beam_skip_threshold = 0;
+    ScanLikelihood plain(w.floorplan, o);
+    plain.logLikelihoods(scan, poses.data(), poses.size(), log.data());
+    const double plain_lead = log[truth_at] - log.back();
+    o.beam_skip_threshold = 0.3;
+    ScanLikelihood skip(w.floorplan, o);
+    skip.logLikelihoods(scan, poses.data(), poses.size(), log.data());
+    EXPECT_GT(skip.lastSkipped(), 300u);  // the row's returns (of all 1081)
+    EXPECT_GT(log[truth_at] - log.back(), plain_lead + 30.0) << "plain lead " << plain_lead;
+    const auto best = static_cast<std::size_t>(std::max_element(log.begin(), log.end()) - log.begin());
+    EXPECT_NEAR(poses[best].x, truth.x, 0.051);
+    EXPECT_NEAR(poses[best].y, truth.y, 0.051);
+    EXPECT_NEAR(poses[best].phi, truth.phi, 0.026);
 }
 
 TEST(ScanLikelihood, BadOptionsNameTheKey) {

@@ -165,7 +165,8 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_challenger_search(*m_map, m_sampler, alwaysEnabled(options.search)),
       m_fit(options.state),
       m_since_lost(challengerWindow(options)),
-      m_monitor(options.state) {
+      m_monitor(options.state),
+      m_scans_since_lost(options.challenger.scan_window) {
     m_pf.m_options = m_opts.pf;
 }
 
@@ -376,8 +377,10 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
             StepRecord ignored;
             update(*m_challenger->mcl, m_challenger->monitor.state(), no_motion ? nullptr : &m_pending, all, ignored);
         }
-        if (m_scan_model && m_pending_scan && m_opts.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfStandardProposal)
+        if (m_scan_model && m_pending_scan && m_opts.pf.PF_algorithm == mrpt::bayes::CParticleFilter::pfStandardProposal) {
+            m_scans_since_lost.add(m_pending_scan, m_odometry);
             m_pending_scan.reset();
+        }
         m_pending = mrpt::poses::CPose2D();
         m_first = false;
     } else if (e.keep_skipped_detections) {
@@ -454,7 +457,10 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
         ++m_challengers_started;
     };
     if (!m_challenger) {
-        if (before != LocalizationState::Lost) start();  // updated from the next update on
+        if (before != LocalizationState::Lost) {  // updated from the next update on
+            m_scans_since_lost.clear();
+            start();
+        }
         return false;
     }
     auto& ch = *m_challenger;
@@ -489,6 +495,11 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     if (!near && c.replace_max_fit < 1.0 &&
         m_since_lost.evaluate(*m_map, now, m_odometry, t_s).fraction > c.replace_max_fit)
         return false;
+    if (!near && m_scan_model && m_scans_since_lost.size() > 0) {  // the LiDAR's say on the way since `lost`
+        std::vector<double> scan_log;
+        m_scans_since_lost.score(*m_scan_model, {now.asTPose(), ch_now.asTPose()}, m_odometry, scan_log);
+        if (scan_log[1] - scan_log[0] < -c.scan_veto_nats) return false;
+    }
     m_mcl = std::move(ch.mcl);
     m_summary = ch.summary;
     m_monitor = ch.monitor;

@@ -54,4 +54,26 @@ void BM_ScanLikelihood5000Particles(benchmark::State& state) {
 }
 BENCHMARK(BM_ScanLikelihood5000Particles)->Arg(1)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
 
+/// Tracking: 5000 particles within +-0.2 m / +-0.05 rad of the scan's pose, the shipped decimation; beam
+/// skipping off (0) or on (1, the default): its cost is the check of every return at <= 500 particles.
+void BM_ScanLikelihoodTracking5000Particles(benchmark::State& state) {
+    const auto& s = setup();
+    simp::localization::LidarModelOptions o;
+    if (state.range(0) == 0) o.beam_skip_threshold = 0;
+    simp::localization::ScanLikelihood model(s.world.floorplan, o);
+    simp::sim::Rng rng(4);
+    const auto& truth = s.poses.front();
+    std::vector<mrpt::math::TPose2D> poses(kParticles);
+    for (auto& p : poses)
+        p = {truth.x + rng.uniform(-0.2, 0.2), truth.y + rng.uniform(-0.2, 0.2), truth.phi + rng.uniform(-0.05, 0.05)};
+    std::vector<double> log(kParticles);
+    model.logLikelihoods(s.scan, poses.data(), kParticles, log.data());
+    for (auto _ : state) {
+        model.logLikelihoods(s.scan, poses.data(), kParticles, log.data());
+        benchmark::DoNotOptimize(log.data());
+    }
+    state.counters["skipped"] = static_cast<double>(model.lastSkipped());
+}
+BENCHMARK(BM_ScanLikelihoodTracking5000Particles)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace

@@ -18,6 +18,7 @@
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/ObjectMcl.h>
 #include <simp/localization/ParticleSummary.h>
+#include <simp/localization/ScanWindow.h>
 #include <simp/localization/SkippedDetections.h>
 #include <simp/localization/StepRecord.h>
 
@@ -75,6 +76,12 @@ struct ChallengerParams {
     /// most this share of the window: a kidnapped estimate explains next to nothing, an estimate
     /// made `lost` by moved furniture still explains part (1: no such condition).
     double replace_max_fit = 0.1;
+    /// With a LiDAR (simp+lidar): the scans since `lost` (the last scan_window of them) are scored at
+    /// both estimates too, and a challenger elsewhere takes over only when they do not prefer the current
+    /// estimate by more than scan_veto_nats (the scan model's weighted log-likelihood). One scan does not
+    /// tell look-alike places apart; the way since `lost` mostly does. scan_window = 0: no veto.
+    std::size_t scan_window = 20;
+    double scan_veto_nats = 1.0;
 };
 
 /// Everything the localizer reads from the .ini.
@@ -198,6 +205,7 @@ class Localizer {
     std::shared_ptr<const ScanLikelihood> m_scan_model;
     bool m_use_objects = true;
     mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
+    ScanWindow m_scans_since_lost;  ///< [Challenger] scan_window: the scans weighed since `lost`
 };
 
 /// Bins of kld's sizes (xy in m, phi in rad) that hold at least one particle.
