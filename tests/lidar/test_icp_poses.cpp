@@ -83,6 +83,43 @@ TEST(LidarIcp, RecoversAKnownOffset) {
     EXPECT_DOUBLE_EQ(kept.x, 3.06);
 }
 
+TEST(LidarIcp, CorrectsOnlyAlongTheDirectionsTheWallsConstrain) {
+    // A corridor 2 m wide and 40 m long (walls along x only within the scanner's 15 m): the walls fix y
+    // and the heading, nothing fixes x.
+    simp::world::World w;
+    auto& g = w.floorplan;
+    g.setSize(-0.5, 40.5, -0.5, 2.5, 0.05, 0.5f);
+    simp::sim::fillRect(g, {0.0, 0.0, 40.0, 2.0}, false);
+    simp::sim::fillRect(g, {-0.15, -0.15, 40.15, 0.0}, true);
+    simp::sim::fillRect(g, {-0.15, 2.0, 40.15, 2.15}, true);
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.0;
+    simp::sim::LidarSimulator lidar(w, p);
+    simp::sim::Rng rng(2);
+    const mrpt::math::TPose2D truth{20.0, 1.0, 0.0};
+    const auto pts = simp::lidar::scanToPoints(lidar.scan(truth, {}, 0.0, rng), 2, 15.0);
+    simp::lidar::IcpPosesOptions o;
+    const simp::lidar::IcpPoseTracker tracker(w.floorplan, o);
+    const mrpt::poses::CPose2D predicted(20.0, 1.0, 0.0), aligned(20.08, 0.96, 0.01);
+    const auto kept = tracker.constrained(predicted, aligned, pts);
+    EXPECT_NEAR(kept.x(), 20.0, 1e-6);   // along the corridor: the prediction
+    EXPECT_NEAR(kept.y(), 0.96, 1e-6);   // across it: the alignment
+    EXPECT_NEAR(kept.phi(), 0.01, 1e-12);  // the heading of the alignment
+    // in the L-shaped room both directions are constrained: the alignment as it is
+    const auto room = lRoom();
+    simp::sim::LidarSimulator room_lidar(room, p);
+    const auto room_pts = simp::lidar::scanToPoints(room_lidar.scan({3.0, 2.0, 0.3}, {}, 0.0, rng), 2, 15.0);
+    const simp::lidar::IcpPoseTracker room_tracker(room.floorplan, o);
+    const mrpt::poses::CPose2D room_aligned(3.0, 2.0, 0.3);
+    const auto all = room_tracker.constrained(mrpt::poses::CPose2D(3.06, 1.95, 0.33), room_aligned, room_pts);
+    EXPECT_NEAR(all.x(), 3.0, 1e-6);
+    EXPECT_NEAR(all.y(), 2.0, 1e-6);
+    // min_constraint_points = 0: every direction, also in the corridor
+    o.min_constraint_points = 0;
+    const simp::lidar::IcpPoseTracker unconstrained(w.floorplan, o);
+    EXPECT_NEAR(unconstrained.constrained(predicted, aligned, pts).x(), 20.08, 1e-6);
+}
+
 TEST(LidarIcpPosesApp, EndToEndOnASimulatedSequence) {
     simp::sim::OfficeParams op;
     op.rooms = 4;

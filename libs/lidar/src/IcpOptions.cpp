@@ -19,7 +19,9 @@ const io::OptionTable<IcpPosesOptions>& IcpPosesOptions::table() {
             .number("min_goodness", &O::min_goodness, "", ValueRange::between(0, 1), "CICP goodness (share of paired points) below: rejected")
             .number("max_correction_m", &O::max_correction_m, "m", ValueRange::between(0, 100),
                     "an alignment moving the odometry prediction farther: rejected")
-            .number("max_correction_deg", &O::max_correction_deg, "deg", ValueRange::between(0, 180), "same for the heading");
+            .number("max_correction_deg", &O::max_correction_deg, "deg", ValueRange::between(0, 180), "same for the heading")
+            .number("min_constraint_points", &O::min_constraint_points, "", ValueRange::between(0, 1e6),
+                    "the translation is applied only along directions that this many aligned points' wall normals constrain (0: all)");
     return t;
 }
 

@@ -22,6 +22,11 @@ struct IcpPosesOptions {
     double min_goodness = 0.1;           ///< CICP goodness (share of paired points) below: rejected
     double max_correction_m = 0.1;       ///< an alignment moving the odometry prediction farther: rejected (m)
     double max_correction_deg = 5.0;     ///< same for the heading (deg)
+    /// The translation of an accepted alignment is applied only along the directions that at least this
+    /// many aligned scan points constrain (the eigenvalues of the sum of their wall normals' outer
+    /// products, points within threshold_dist_m of a wall): along a corridor the walls fix nothing, and
+    /// furniture paired with wall points slid the pose there by up to max_correction_m per step. 0: all.
+    double min_constraint_points = 20;
 
     /// The declaration of every key (section [ICP]).
     static const io::OptionTable<IcpPosesOptions>& table();

@@ -12,6 +12,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/slam/CICP.h>
 #include <simp/lidar/IcpOptions.h>
+#include <opencv2/core.hpp>
 
 #include <cstddef>
 
@@ -34,8 +35,15 @@ class IcpPoseTracker {
     std::size_t rejected() const { return m_rejected; }  ///< scans left to odometry
     std::size_t wallPoints() const { return m_walls.size(); }
 
+    /// The correction from `predicted` to `aligned` kept along the directions that `scan_points` (robot
+    /// frame) at `aligned` constrain (IcpPosesOptions::min_constraint_points): the pose to use.
+    mrpt::poses::CPose2D constrained(const mrpt::poses::CPose2D& predicted, const mrpt::poses::CPose2D& aligned,
+                                     const mrpt::maps::CSimplePointsMap& scan_points) const;
+
    private:
     IcpPosesOptions m_opts;
+    cv::Mat1f m_wall_distance_m;  ///< distance of each floor-plan cell to the nearest wall cell (m)
+    double m_x_min = 0, m_y_min = 0, m_res = 0.05;
     mrpt::maps::CSimplePointsMap m_walls;
     mrpt::slam::CICP m_icp;
     mrpt::poses::CPose2D m_pose;
