@@ -2,11 +2,8 @@
 #include <simp/lidar/ScanPoints.h>
 
 #include <mrpt/math/wrap2pi.h>
-#include <simp/camera/FloorPlanThresholds.h>
-#include <opencv2/imgproc.hpp>
 
 #include <Eigen/Eigenvalues>
-#include <algorithm>
 
 #include <cmath>
 #include <stdexcept>
@@ -14,19 +11,8 @@
 namespace simp::lidar {
 
 IcpPoseTracker::IcpPoseTracker(const mrpt::maps::COccupancyGridMap2D& floorplan, const IcpPosesOptions& options)
-    : m_opts(options), m_walls(wallSurfacePoints(floorplan)) {
+    : m_opts(options), m_walls(wallSurfacePoints(floorplan)), m_wall_distance(floorplan) {  // the same walls (< kUnknownFree)
     if (m_walls.empty()) throw std::invalid_argument("IcpPoseTracker: the floor plan has no wall");
-    // The walls of wallSurfacePoints (cells below kUnknownFree), as a distance map: its gradient is the
-    // wall normal at a scan point.
-    cv::Mat1b free_cells(static_cast<int>(floorplan.getSizeY()), static_cast<int>(floorplan.getSizeX()));
-    for (int cy = 0; cy < free_cells.rows; ++cy)
-        for (int cx = 0; cx < free_cells.cols; ++cx)
-            free_cells(cy, cx) = floorplan.getCell(cx, cy) < camera::floorplan::kUnknownFree ? 0 : 255;
-    cv::distanceTransform(free_cells, m_wall_distance_m, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    m_res = floorplan.getResolution();
-    m_wall_distance_m *= m_res;
-    m_x_min = floorplan.getXMin();
-    m_y_min = floorplan.getYMin();
     auto& o = m_icp.options;
     o.ICP_algorithm = mrpt::slam::icpClassic;
     o.maxIterations = static_cast<unsigned>(m_opts.max_iterations);
@@ -68,18 +54,14 @@ mrpt::poses::CPose2D IcpPoseTracker::constrained(const mrpt::poses::CPose2D& pre
                                                  const mrpt::maps::CSimplePointsMap& scan_points) const {
     if (m_opts.min_constraint_points <= 0) return aligned;
     Eigen::Matrix2d info = Eigen::Matrix2d::Zero();
-    const int cols = m_wall_distance_m.cols, rows = m_wall_distance_m.rows;
-    const auto d = [&](int cx, int cy) { return m_wall_distance_m(std::clamp(cy, 0, rows - 1), std::clamp(cx, 0, cols - 1)); };
     for (std::size_t i = 0; i < scan_points.size(); ++i) {
         float lx = 0, ly = 0;
         scan_points.getPoint(i, lx, ly);
         double wx = 0, wy = 0;
         aligned.composePoint(lx, ly, wx, wy);
-        const mrpt::math::TPoint2D w(wx, wy);
-        const int cx = static_cast<int>(std::floor((w.x - m_x_min) / m_res)), cy = static_cast<int>(std::floor((w.y - m_y_min) / m_res));
-        if (cx < 1 || cy < 1 || cx >= cols - 1 || cy >= rows - 1 || d(cx, cy) > m_opts.threshold_dist_m) continue;
-        Eigen::Vector2d n(d(cx + 1, cy) - d(cx - 1, cy), d(cx, cy + 1) - d(cx, cy - 1));
-        if (n.norm() < 1e-9) continue;  // inside a wall, or between two: no direction
+        if (m_wall_distance.at(wx, wy) > m_opts.threshold_dist_m) continue;
+        Eigen::Vector2d n = m_wall_distance.gradient(wx, wy);
+        if (n.norm() < 1e-9) continue;  // inside a wall, between two, or on the grid's border: no direction
         n.normalize();
         info += n * n.transpose();
     }

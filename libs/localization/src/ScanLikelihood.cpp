@@ -2,7 +2,6 @@
 
 #include <mrpt/poses/CPose3D.h>
 #include <simp/world/ScanPlane.h>
-#include <opencv2/imgproc.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -61,13 +60,8 @@ mrpt::maps::COccupancyGridMap2D& ScanLikelihood::gridAt(double height_m) const {
     o.LF_maxCorrsDistance = static_cast<float>(m_opts.max_corr_distance_m);
     o.LF_useSquareDist = false;
     o.enableLikelihoodCache = true;
-    // Distance to the nearest obstacle (MRPT's likelihood field's: a cell below free-probability 0.5).
-    cv::Mat1b free_cells(static_cast<int>(m_grid->getSizeY()), static_cast<int>(m_grid->getSizeX()));
-    for (int cy = 0; cy < free_cells.rows; ++cy)
-        for (int cx = 0; cx < free_cells.cols; ++cx)
-            free_cells(cy, cx) = m_grid->getCell(cx, cy) < 0.5f ? 0 : 255;
-    cv::distanceTransform(free_cells, m_distance_m, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-    m_distance_m *= m_grid->getResolution();
+    // Obstacles as MRPT's likelihood field has them: cells below free-probability 0.5 (kUnknownFree).
+    m_wall_distance = camera::WallDistance(*m_grid);
     return *m_grid;
 }
 
@@ -96,7 +90,7 @@ std::vector<char> ScanLikelihood::usableReturns(const mrpt::obs::CObservation2DR
 
 void ScanLikelihood::skipUnexplained(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D* poses,
                                      std::size_t n, std::vector<char>& usable) const {
-    const auto& grid = gridAt(scan.sensorPose.z());
+    gridAt(scan.sensorPose.z());  // the scan plane's grid and its m_wall_distance
     // Return ends in the robot frame (only those weighed: usable and within the model's range).
     std::vector<std::size_t> index;
     std::vector<double> lx, ly;
@@ -114,15 +108,11 @@ void ScanLikelihood::skipUnexplained(const mrpt::obs::CObservation2DRangeScan& s
     const std::size_t stride = std::max<std::size_t>(1, n / 500);
     std::vector<std::size_t> explained(index.size(), 0);
     std::size_t sampled = 0;
-    const double res = grid.getResolution(), x0 = grid.getXMin(), y0 = grid.getYMin();
-    const int cols = m_distance_m.cols, rows = m_distance_m.rows;
     for (std::size_t p = 0; p < n; p += stride, ++sampled) {
         const double c = std::cos(poses[p].phi), s = std::sin(poses[p].phi);
         for (std::size_t k = 0; k < index.size(); ++k) {
             const double wx = poses[p].x + c * lx[k] - s * ly[k], wy = poses[p].y + s * lx[k] + c * ly[k];
-            const int cx = static_cast<int>(std::floor((wx - x0) / res)), cy = static_cast<int>(std::floor((wy - y0) / res));
-            if (cx < 0 || cy < 0 || cx >= cols || cy >= rows) continue;
-            if (m_distance_m(cy, cx) <= m_opts.beam_skip_distance_m) ++explained[k];
+            if (m_wall_distance.at(wx, wy) <= m_opts.beam_skip_distance_m) ++explained[k];
         }
     }
     std::vector<std::size_t> skip;

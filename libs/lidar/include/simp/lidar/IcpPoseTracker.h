@@ -12,7 +12,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/slam/CICP.h>
 #include <simp/lidar/IcpOptions.h>
-#include <opencv2/core.hpp>
+#include <simp/camera/WallDistance.h>
 
 #include <cstddef>
 
@@ -42,9 +42,8 @@ class IcpPoseTracker {
 
    private:
     IcpPosesOptions m_opts;
-    cv::Mat1f m_wall_distance_m;  ///< distance of each floor-plan cell to the nearest wall cell (m)
-    double m_x_min = 0, m_y_min = 0, m_res = 0.05;
     mrpt::maps::CSimplePointsMap m_walls;
+    camera::WallDistance m_wall_distance;  ///< its gradient: the wall normal at a scan point
     mrpt::slam::CICP m_icp;
     mrpt::poses::CPose2D m_pose;
     std::size_t m_accepted = 0, m_rejected = 0;

@@ -11,9 +11,8 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CSensoryFrame.h>
 #include <simp/io/OptionTable.h>
+#include <simp/camera/WallDistance.h>
 #include <simp/world/ObjectMapData.h>
-
-#include <opencv2/core.hpp>
 
 #include <cstddef>
 #include <memory>
@@ -96,7 +95,7 @@ class ScanLikelihood {
     mutable std::unique_ptr<mrpt::maps::COccupancyGridMap2D> m_grid;
     mutable double m_grid_height_m = 0;
     mutable std::size_t m_objects_drawn = 0;
-    mutable cv::Mat1f m_distance_m;  ///< distance (m) of each cell of m_grid to its nearest obstacle
+    mutable camera::WallDistance m_wall_distance;  ///< of m_grid's obstacles (beam skipping)
     mutable std::size_t m_last_skipped = 0;
 };
 
