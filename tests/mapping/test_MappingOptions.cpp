@@ -77,6 +77,8 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("class_min_confidence = sink:1.5", "sink");
     expectThrowNaming("duplicate_tau_cost = 1.5", "duplicate_tau_cost");
     expectThrowNaming("duplicate_min_overlap = -0.1", "duplicate_min_overlap");
+    expectThrowNaming("twin_max_support_ratio = 2", "twin_max_support_ratio");
+    expectThrowNaming("twin_min_likelihood = -0.05", "twin_min_likelihood");
     expectThrowNaming("duplicate_center_radius_m = wide", "duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa", "class_duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa:-1", "sofa");

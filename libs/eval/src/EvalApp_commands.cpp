@@ -117,7 +117,23 @@ int EvalApp::runMap(std::ostream& out) {
     if (has("--png")) {
         writeFigure(value("--png"), drawMapEvaluation(gt, map, m), out);
     }
-    if (has("--json")) out << toJson(m).dump() << "\n";
+    if (has("--json")) {
+        // Which objects the figures are about: ids and classes of the ground truth left unmatched and
+        // of the map objects that match nothing, so that a user can look each one up.
+        const auto listed = [](const world::ObjectMapData& data, const std::vector<std::size_t>& indices) {
+            nlohmann::json list = nlohmann::json::array();
+            for (std::size_t i : indices) {
+                const auto& o = data.objects.at(i);
+                list.push_back({{"id", o.id}, {"class", data.class_names.at(static_cast<std::size_t>(o.class_id))},
+                                {"center_m", {o.box.center.x(), o.box.center.y(), o.box.center.z()}}});
+            }
+            return list;
+        };
+        nlohmann::json j = toJson(m);
+        j["missed_ground_truth"] = listed(gt.objects, m.missed_gt);
+        j["false_map_objects"] = listed(map.objects, m.false_pred);
+        out << j.dump() << "\n";
+    }
     return 0;
 }
 

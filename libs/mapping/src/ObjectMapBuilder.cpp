@@ -92,8 +92,36 @@ world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
         return m_options.hide_objects_in_walls && planDrawsOnlyWalls() && (m_walls.isWall(x, y) || m_walls.isOutside(x, y));
     };
     out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), tentative), out.objects.end());
+    // Twins by support (MappingOptions twin_max_support_ratio), judged on the whole run's counts:
+    // during the run a real object seen late would lose to a neighbour seen early.
+    if (m_options.twin_max_support_ratio > 0) {
+        std::vector<char> twin(out.objects.size(), 0);
+        for (std::size_t i = 0; i < out.objects.size(); ++i) {
+            const world::MapObject& ref = out.objects[i];
+            if (isGivenObject(ref.id)) continue;
+            const model::ObjectDistribution p_ref = objectDistribution(ref, ref.box);
+            for (std::size_t k = 0; k < out.objects.size(); ++k)
+                if (k != i && out.objects[k].class_id == ref.class_id && isTwinBySupport(ref, p_ref, out.objects[k])) twin[k] = 1;
+        }
+        std::size_t w = 0;
+        for (std::size_t k = 0; k < out.objects.size(); ++k)
+            if (!twin[k]) out.objects[w++] = out.objects[k];
+        out.objects.resize(w);
+    }
     return out;
 }
+
+bool ObjectMapBuilder::isTwinBySupport(const world::MapObject& ref, const model::ObjectDistribution& p_ref,
+                                       const world::MapObject& other) const {
+    if (m_options.twin_max_support_ratio <= 0 || isGivenObject(ref.id) || isGivenObject(other.id)) return false;
+    // Objects of different rooms are never one (the room rule), and one seen only from the other
+    // side of a wall is seen less.
+    if (ref.room_id != 0 && other.room_id != 0 && ref.room_id != other.room_id) return false;
+    if (static_cast<double>(other.n_match) >= m_options.twin_max_support_ratio * static_cast<double>(ref.n_match))
+        return false;
+    return p_ref.probability(other.box.center.x(), other.box.center.y()) >= m_options.twin_min_likelihood;
+}
+
 
 int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
     if (m_rooms.empty()) return 0;

@@ -64,6 +64,8 @@ const io::OptionTable<TrajectoryParams>& TrajectoryParams::table() {
             .choice("visit_order", &O::coverage, std::vector<std::pair<std::string, bool>>{{"shuffled", false}, {"coverage", true}},
                     "room goals of each round shuffled (errands) or coverage (nearest room not yet visited, a full turn in every room: a mapping run; `--coverage`)")
             .number("coverage_part_m", &O::coverage_part_m, "m", ValueRange::positive(), "coverage: each room's bounding box is cut into parts of about this size (at most 2 x 2), one goal each")
+            .number("coverage_turn_deg", &O::coverage_turn_deg, "deg", ValueRange::between(0, 360),
+                    "coverage: the turn on the spot at every goal; 0 = 360 / [cameras] count (each bearing passes a camera's axis)")
             .number("waypoint_tolerance_m", &O::waypoint_tolerance_m, "m", ValueRange::positive(), "a waypoint is reached within this distance")
             .rule("speed_max_mps", [](const O& o) { return o.speed_max_mps >= o.speed_min_mps; }, "be >= speed_min_mps");
     return t;

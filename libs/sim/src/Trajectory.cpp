@@ -233,7 +233,7 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
                    (d.waypoints[d.next] - Eigen::Vector2d(d.pose.x, d.pose.y)).norm() < p.waypoint_tolerance_m) {
                 ++d.next;
                 if (d.next == d.waypoints.size() && (rng.bernoulli(p.spin_probability) || p.coverage))
-                    d.spin_left_rad = 2 * M_PI;
+                    d.spin_left_rad = p.coverage && p.coverage_turn_deg > 0 ? p.coverage_turn_deg / 180.0 * M_PI : 2 * M_PI;
             }
             if (d.next >= d.waypoints.size() && d.spin_left_rad <= 0 && failures < 3) {
                 if (!newLeg()) ++failures;  // nowhere to go: stand still

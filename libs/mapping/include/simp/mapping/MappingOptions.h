@@ -75,6 +75,17 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// measured on both offices (doc/results.md); 0.1 also merged real neighbours (tables back
     /// to back, cabinets in a row) whose mapped boxes overlap a little.
     double duplicate_min_overlap = 0.2;
+    /// Project rule (twins by support): a built object with fewer than this fraction of the
+    /// detections of a same-class neighbour of its room whose noise model (Eq. perclassdist) gives
+    /// its centre a likelihood >= twin_min_likelihood is that neighbour's twin: the persistent error
+    /// of one or two viewpoints, not a second object (a real neighbour seen from the same places
+    /// collects a comparable count). Left out of confirmedMap(), judged on the counts at that time.
+    /// 0 disables. Objects of a given map (setMap) are never compared so: their counts are of
+    /// earlier sessions. Measured in doc/results.md ("Twins by support").
+    double twin_max_support_ratio = 0.05;
+    /// The gate of the rule above: the unnormalized Eq. perclassdist likelihood exp(-0.5 m^b) of
+    /// the twin's centre under the neighbour's noise; 0.05 = the 95 % region of a Gaussian model.
+    double twin_min_likelihood = 0.05;
     /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
     double duplicateCenterRadiusOf(const std::string& class_name) const;
     /// Project rule: objects of a listed class stand between two rooms (a door in its doorway) and

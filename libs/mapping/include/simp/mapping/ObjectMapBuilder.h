@@ -143,6 +143,10 @@ class ObjectMapBuilder {
     /// object, else a value > 1.
     double duplicateCost(const geometry::Box3D& o1, const model::ObjectDistribution& p_o1, int class_id,
                          const geometry::Box3D& o2) const;
+    /// MappingOptions twin_max_support_ratio: `other` (built, same class) has too few detections
+    /// next to `ref` and lies inside ref's noise gate, so it is ref's twin.
+    bool isTwinBySupport(const world::MapObject& ref, const model::ObjectDistribution& p_ref,
+                         const world::MapObject& other) const;
     void mergeLocalDuplicates();
     /// The floor-plan prior (MappingOptions wall_align): aligns the object's box to its wall.
     void alignToFloorPlan(world::MapObject& o) const;

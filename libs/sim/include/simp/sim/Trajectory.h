@@ -35,6 +35,9 @@ struct TrajectoryParams {
     bool coverage = false;
     /// In coverage, every room is cut into parts of about this size (m, at most 2 x 2) with a goal each.
     double coverage_part_m = 3.0;
+    /// In coverage, the turn on the spot at every goal (deg); 0 = 360 / the rig's camera count
+    /// (set by the sequence: every bearing then passes through some camera's optical axis).
+    double coverage_turn_deg = 0.0;
 
     /// [trajectory] keys, declared once (SimParams.cpp).
     static const io::OptionTable<TrajectoryParams>& table();
