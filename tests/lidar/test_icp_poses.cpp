@@ -48,7 +48,7 @@ TEST(LidarScanPoints, ScanPointsLieOnTheWalls) {
     simp::sim::LidarSimulator lidar(w, p);
     simp::sim::Rng rng(1);
     const auto scan = lidar.scan({3.0, 2.0, 0.0}, {}, 0.0, rng);
-    const auto pts = simp::lidar::scanToPoints(scan, 1, 30.0);
+    const auto pts = simp::lidar::scanToPoints(scan, 1, 0.0, 30.0);
     ASSERT_GT(pts.size(), 1000u);
     // the ray straight ahead hits the wall at x = 10 m, 7 m ahead of the robot
     float x = 0, y = 0, z = 0;
@@ -56,6 +56,29 @@ TEST(LidarScanPoints, ScanPointsLieOnTheWalls) {
     EXPECT_NEAR(x, 7.0, 0.06);
     EXPECT_NEAR(y, 0.0, 0.06);
     EXPECT_GT(simp::lidar::wallSurfacePoints(w.floorplan).size(), 500u);
+}
+
+TEST(LidarScanPoints, ReturnsInsideTheFootprintAreLeftOut) {
+    // Three rays: 0.1 m (something touching the scanner), 0.3 m and 2 m; the sensor 0.2 m ahead of the
+    // robot centre. min_range_m 0.3 keeps the last two, 0 all three; max_range_m 1 drops the 2 m one.
+    mrpt::obs::CObservation2DRangeScan scan;
+    scan.aperture = static_cast<float>(M_PI / 2);
+    scan.rightToLeft = true;
+    scan.sensorPose = mrpt::poses::CPose3D(0.2, 0, 0.3, 0, 0, 0);
+    scan.resizeScan(3);
+    const float ranges[3] = {0.1f, 0.3f, 2.0f};
+    for (std::size_t i = 0; i < 3; ++i) {
+        scan.setScanRange(i, ranges[i]);
+        scan.setScanRangeValidity(i, true);
+    }
+    EXPECT_EQ(simp::lidar::scanToPoints(scan, 1, 0.3, 30.0).size(), 2u);
+    EXPECT_EQ(simp::lidar::scanToPoints(scan, 1, 0.0, 30.0).size(), 3u);
+    EXPECT_EQ(simp::lidar::scanToPoints(scan, 1, 0.3, 1.0).size(), 1u);
+    const auto far = simp::lidar::scanToPoints(scan, 1, 0.3, 30.0);
+    float x = 0, y = 0, z = 0;
+    far.getPoint(1, x, y, z);  // the 2 m ray, 45 deg left of the sensor's axis
+    EXPECT_NEAR(x, 0.2 + 2.0 * std::cos(M_PI / 4), 1e-5);
+    EXPECT_NEAR(y, 2.0 * std::sin(M_PI / 4), 1e-5);
 }
 
 TEST(LidarIcp, RecoversAKnownOffset) {
@@ -67,6 +90,7 @@ TEST(LidarIcp, RecoversAKnownOffset) {
     const mrpt::math::TPose2D truth{3.0, 2.0, 0.3};
     const auto scan = lidar.scan(truth, {}, 0.0, rng);
     simp::lidar::IcpPosesOptions o;
+    o.alignment_sigma_m = 0;  // the fixed gate: an accepted alignment is taken as it is
     simp::lidar::IcpPoseTracker tracker(w.floorplan, o);
     tracker.reset({3.06, 1.95, 0.33});  // 0.08 m and 0.03 rad off
     const auto est = tracker.step(mrpt::poses::CPose2D(), &scan);
@@ -83,6 +107,40 @@ TEST(LidarIcp, RecoversAKnownOffset) {
     EXPECT_DOUBLE_EQ(kept.x, 3.06);
 }
 
+TEST(LidarIcp, APoseThatSlidIsTakenBackByTheUncertaintyGate) {
+    // The robot stands still in the L-shaped room; the tracker starts 0.12 m off (a pose that slid),
+    // from where one alignment reaches the truth. A fixed gate of 0.05 m rejects every alignment: the
+    // error stays for good. The uncertainty gate (0.01 m alignments, 4 sigmas: 0.04 m at first) rejects
+    // too at first, but each step's process noise widens it until the walls are believed, and the
+    // Kalman gain then brings the pose back.
+    const auto w = lRoom();
+    simp::sim::LidarParams p;
+    p.range_std_m = 0.02;
+    simp::sim::LidarSimulator lidar(w, p);
+    const mrpt::math::TPose2D truth{3.0, 2.0, 0.3};
+    const auto run = [&](double alignment_sigma_m) {
+        simp::lidar::IcpPosesOptions o;
+        o.alignment_sigma_m = alignment_sigma_m;
+        o.max_correction_m = 0.05;  // the fixed gate's (used when alignment_sigma_m = 0)
+        simp::lidar::IcpPoseTracker tracker(w.floorplan, o);
+        tracker.reset({3.12, 2.0, 0.3});
+        simp::sim::Rng rng(8);
+        mrpt::math::TPose2D est{};
+        for (int k = 0; k < 300; ++k) {
+            const auto scan = lidar.scan(truth, {}, 0.0, rng);
+            est = tracker.step(mrpt::poses::CPose2D(), &scan);
+        }
+        return std::make_pair(est, tracker.accepted());
+    };
+    const auto [fixed, fixed_accepted] = run(0.0);
+    EXPECT_EQ(fixed_accepted, 0u);
+    EXPECT_NEAR(fixed.x, 3.12, 1e-9);
+    const auto [gated, gated_accepted] = run(0.01);
+    EXPECT_GT(gated_accepted, 0u);
+    EXPECT_LT(std::hypot(gated.x - truth.x, gated.y - truth.y), 0.02);
+    EXPECT_NEAR(gated.phi, truth.phi, 0.01);
+}
+
 TEST(LidarIcp, CorrectsOnlyAlongTheDirectionsTheWallsConstrain) {
     // A corridor 2 m wide and 40 m long (walls along x only within the scanner's 15 m): the walls fix y
     // and the heading, nothing fixes x.
@@ -97,7 +155,7 @@ TEST(LidarIcp, CorrectsOnlyAlongTheDirectionsTheWallsConstrain) {
     simp::sim::LidarSimulator lidar(w, p);
     simp::sim::Rng rng(2);
     const mrpt::math::TPose2D truth{20.0, 1.0, 0.0};
-    const auto pts = simp::lidar::scanToPoints(lidar.scan(truth, {}, 0.0, rng), 2, 15.0);
+    const auto pts = simp::lidar::scanToPoints(lidar.scan(truth, {}, 0.0, rng), 2, 0.3, 15.0);
     simp::lidar::IcpPosesOptions o;
     const simp::lidar::IcpPoseTracker tracker(w.floorplan, o);
     const mrpt::poses::CPose2D predicted(20.0, 1.0, 0.0), aligned(20.08, 0.96, 0.01);
@@ -108,7 +166,7 @@ TEST(LidarIcp, CorrectsOnlyAlongTheDirectionsTheWallsConstrain) {
     // in the L-shaped room both directions are constrained: the alignment as it is
     const auto room = lRoom();
     simp::sim::LidarSimulator room_lidar(room, p);
-    const auto room_pts = simp::lidar::scanToPoints(room_lidar.scan({3.0, 2.0, 0.3}, {}, 0.0, rng), 2, 15.0);
+    const auto room_pts = simp::lidar::scanToPoints(room_lidar.scan({3.0, 2.0, 0.3}, {}, 0.0, rng), 2, 0.3, 15.0);
     const simp::lidar::IcpPoseTracker room_tracker(room.floorplan, o);
     const mrpt::poses::CPose2D room_aligned(3.0, 2.0, 0.3);
     const auto all = room_tracker.constrained(mrpt::poses::CPose2D(3.06, 1.95, 0.33), room_aligned, room_pts);

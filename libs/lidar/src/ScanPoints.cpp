@@ -8,7 +8,7 @@
 namespace simp::lidar {
 
 mrpt::maps::CSimplePointsMap scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t decimation,
-                                          double max_range_m) {
+                                          double min_range_m, double max_range_m) {
     mrpt::maps::CSimplePointsMap pts;
     const std::size_t n = scan.getScanSize();
     if (n < 2) return pts;
@@ -17,7 +17,7 @@ mrpt::maps::CSimplePointsMap scanToPoints(const mrpt::obs::CObservation2DRangeSc
     for (std::size_t i = 0; i < n; i += std::max<std::size_t>(1, decimation)) {
         if (!scan.getScanRangeValidity(i)) continue;
         const double r = scan.getScanRange(i);
-        if (!(r > 0) || r > max_range_m) continue;
+        if (!(r > 0) || r < min_range_m || r > max_range_m) continue;
         const double a = (scan.rightToLeft ? 1.0 : -1.0) * (-0.5 * scan.aperture + step * static_cast<double>(i));
         double gx = 0, gy = 0;
         sensor.composePoint(r * std::cos(a), r * std::sin(a), gx, gy);

@@ -13,6 +13,11 @@ namespace simp::lidar {
 struct IcpPosesOptions {
     int scan_decimation = 2;             ///< every n-th ray of a scan is aligned (1081 rays -> 541)
     double max_range_m = 15.0;           ///< rays beyond are left out (m)
+    /// Rays shorter than this are left out (m): returns inside the robot's footprint are the robot or
+    /// something touching the scanner (a person walking through it), never a wall; aligned to the walls
+    /// they slid the pose 0.22 m along a corridor in 0.5 s (doc/lidar.md). The scan model's
+    /// [LidarModel] min_range_m leaves them out for the same reason.
+    double min_range_m = 0.3;
     int max_iterations = 60;             ///< CICP::TConfigParams::maxIterations
     double threshold_dist_m = 0.15;      ///< initial pairing distance (m), CICP thresholdDist
     double threshold_ang_deg = 0.0;      ///< pairing distance growing with range (deg), CICP thresholdAng
@@ -27,6 +32,26 @@ struct IcpPosesOptions {
     /// products, points within threshold_dist_m of a wall): along a corridor the walls fix nothing, and
     /// furniture paired with wall points slid the pose there by up to max_correction_m per step. 0: all.
     double min_constraint_points = 20;
+    /// @name Uncertainty gate (alignment_sigma_m = 0: off, the fixed max_correction_* gate instead).
+    /// The pose's position and heading variances grow each step with the motion (process_*: sigma
+    /// per metre driven and per radian turned, at least process_min_* per step) and shrink with each
+    /// accepted alignment, whose own error is alignment_sigma_*. An alignment is accepted when its
+    /// correction is within gate_sigmas of the two and applied with the Kalman gain (along the
+    /// constrained directions). Why: with the fixed gate, a run of accepted 3-9 cm corrections (a door
+    /// leaf the plan lacks, paired with the door's jambs) slid the pose 0.2 m along a corridor, and
+    /// every correction back exceeded max_correction_m: lost for good (doc/lidar.md). Here the
+    /// rejections let the variance, hence the gate, grow until the walls take the pose back.
+    /// @{
+    double alignment_sigma_m = 0.03;
+    double alignment_sigma_deg = 1.0;
+    double gate_sigmas = 4.0;
+    double process_m_per_m = 0.05;      ///< position sigma per metre driven
+    double process_m_per_rad = 0.01;    ///< position sigma per radian turned
+    double process_rad_per_m = 0.05;    ///< heading sigma per metre driven
+    double process_rad_per_rad = 0.03;  ///< heading sigma per radian turned
+    double process_min_m = 0.005;       ///< position sigma added at least per step (standing still too)
+    double process_min_rad = 0.0035;    ///< heading sigma added at least per step
+    /// @}
 
     /// The declaration of every key (section [ICP]).
     static const io::OptionTable<IcpPosesOptions>& table();

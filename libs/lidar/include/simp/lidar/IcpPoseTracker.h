@@ -23,7 +23,11 @@ class IcpPoseTracker {
     IcpPoseTracker(const mrpt::maps::COccupancyGridMap2D& floorplan, const IcpPosesOptions& options);
 
     /// Starts at `pose` (m, rad; world frame of the floor plan).
-    void reset(const mrpt::math::TPose2D& pose) { m_pose = mrpt::poses::CPose2D(pose); }
+    /// The start is known: the uncertainty gate's variances start at 0.
+    void reset(const mrpt::math::TPose2D& pose) {
+        m_pose = mrpt::poses::CPose2D(pose);
+        m_var_xy = m_var_phi = 0.0;
+    }
 
     /// One step: `odometry_increment` (robot frame of the previous step), then `scan` (nullptr: none).
     /// \return the pose after the step.
@@ -47,6 +51,7 @@ class IcpPoseTracker {
     mrpt::slam::CICP m_icp;
     mrpt::poses::CPose2D m_pose;
     std::size_t m_accepted = 0, m_rejected = 0;
+    double m_var_xy = 0.0, m_var_phi = 0.0;  ///< the pose's variance (m^2, rad^2; uncertainty gate)
 };
 
 }  // namespace simp::lidar

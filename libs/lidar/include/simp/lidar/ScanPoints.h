@@ -10,10 +10,11 @@
 
 namespace simp::lidar {
 
-/// Every `decimation`-th valid ray of `scan` no farther than max_range_m as a point (m) in the ROBOT
-/// frame (the scan's sensorPose applied; rays right to left over the aperture as MRPT defines them).
+/// Every `decimation`-th valid ray of `scan` with a range in [min_range_m, max_range_m] as a point (m)
+/// in the ROBOT frame (the scan's sensorPose applied; rays right to left over the aperture as MRPT
+/// defines them).
 mrpt::maps::CSimplePointsMap scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::size_t decimation,
-                                          double max_range_m);
+                                          double min_range_m, double max_range_m);
 
 /// Centres (m) of the occupied cells of `grid` (free probability < 0.5, camera::floorplan::kUnknownFree) that touch a free cell (free
 /// probability > 0.5): the wall surfaces a scan can hit.

@@ -37,7 +37,8 @@ struct TrajectoryParams {
     double coverage_part_m = 3.0;
     /// In coverage, the turn on the spot at every goal (deg); 0 = 360 / the rig's camera count
     /// (set by the sequence: every bearing then passes through some camera's optical axis).
-    double coverage_turn_deg = 0.0;
+    /// Default a full turn: doc/simulator.md says what a quarter turn changed.
+    double coverage_turn_deg = 360.0;
 
     /// [trajectory] keys, declared once (SimParams.cpp).
     static const io::OptionTable<TrajectoryParams>& table();
