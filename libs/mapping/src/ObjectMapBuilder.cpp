@@ -122,7 +122,6 @@ bool ObjectMapBuilder::isTwinBySupport(const world::MapObject& ref, const model:
     return p_ref.probability(other.box.center.x(), other.box.center.y()) >= m_options.twin_min_likelihood;
 }
 
-
 int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
     if (m_rooms.empty()) return 0;
     const double res = m_rooms.resolution_m;
