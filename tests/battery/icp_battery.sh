@@ -14,6 +14,7 @@ SEQ_SEED=${SEQ_SEED:-3}
 DURATION=${DURATION:-900}
 JOBS=${JOBS:-2}
 AUTHORS=${AUTHORS:-../shared/data/simp-office}
+SIMCFG=${SIMCFG:-config_ini/sim.ini}  # the simulator's .ini (e.g. another [trajectory] coverage)
 CLASSES="sink,oven,board,table,potted plant,drawers,sofa,cabinet,fire extinguisher,desk"
 mkdir -p "$OUT"
 worlds=()
@@ -30,7 +31,7 @@ fi
 one_world() {
   local w=$1 W="$OUT/w_$1" Q="$OUT/q_$1"
   [ -f "$Q/sequence.rawlog" ] || "$B/simp-sim" sequence --world "$W" --seed "$SEQ_SEED" --coverage --duration "$DURATION" \
-      --lidar --out "$Q" >/dev/null 2>&1
+      --lidar --config "$SIMCFG" --out "$Q" >/dev/null 2>&1
   local start
   start=$(grep -v '^#' "$Q/groundtruth.tum" | head -1 | python3 -c "import sys,math; t,x,y,z,qx,qy,qz,qw=map(float,sys.stdin.read().split()); print(f'{x},{y},{2*math.atan2(qz,qw)}')")
   "$B/simp-icp-poses" --world "$W" --rawlog "$Q/sequence.rawlog" --initial-pose "$start" --out "$OUT/icp_$w.tum" \
@@ -43,7 +44,7 @@ one_world() {
   done
 }
 export -f one_world
-export OUT B SEQ_SEED DURATION CLASSES
+export OUT B SEQ_SEED DURATION CLASSES SIMCFG
 printf '%s\n' "${worlds[@]}" | xargs -P "$JOBS" -I{} bash -c 'one_world {}'
 python3 - "$OUT" "${worlds[@]}" <<'PY'
 import json, re, sys

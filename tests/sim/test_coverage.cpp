@@ -1,4 +1,4 @@
-// Coverage trajectories (a mapping run): nearest-first room goals, a full turn at each, every room
+// Coverage trajectories (a mapping run): room goals along a tour, a turn at each, every room
 // cut into parts; and the built-in office furnished with the authors' classes.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -84,10 +84,24 @@ TEST(SimCoverage, CoverageEntersEveryRoomAndTurnsAtEachGoal) {
     TrajectoryParams p;
     p.coverage = true;
     Rng rng_a(5);
-    const auto cover = generateTrajectory(s.obstacles, s.office.world.rooms, p, 0.0, 0.1, 420.0, rng_a);
+    CoverageProgress progress;
+    const auto cover = generateTrajectory(s.obstacles, s.office.world.rooms, p, 0.0, 0.1, 900.0, rng_a, {}, nullptr,
+                                          nullptr, &progress);
     std::set<int> all;
     for (const auto& r : s.office.layout.rooms) all.insert(r.id);
     EXPECT_EQ(roomsVisited(s, cover), all);
+    EXPECT_GT(progress.goals, all.size());  // the parts' goals and those that bring corners within reach
+    EXPECT_EQ(progress.reached, progress.goals);
+    EXPECT_GT(progress.all_reached_s, 0.0);
+    EXPECT_LE(progress.all_reached_s, 900.0);
+    // The same run cut short has not reached them all, and says so.
+    Rng rng_b(5);
+    CoverageProgress short_run;
+    const auto part = generateTrajectory(s.obstacles, s.office.world.rooms, p, 0.0, 0.1, progress.all_reached_s / 2, rng_b,
+                                         {}, nullptr, nullptr, &short_run);
+    EXPECT_EQ(short_run.goals, progress.goals);
+    EXPECT_LT(short_run.reached, progress.goals);
+    EXPECT_LT(short_run.all_reached_s, 0.0);
 
     // A full turn at every goal: the heading sweeps 2 pi many times (once per goal reached).
     double turned = 0;

@@ -125,3 +125,28 @@ TEST(SimApp, WorldThenSequenceEndToEnd) {
     for (const char* f : {"sequence.rawlog", "groundtruth.tum", "world/objects.json", "overview.png"})
         EXPECT_TRUE(std::filesystem::exists(dir / "q" / f)) << f;
 }
+
+namespace {
+
+TEST(SimApp, ACoverageRunSaysWhetherItReachedEveryGoal) {
+    const auto dir = std::filesystem::path(SIMP_TEST_OUTPUT_DIR) / "sim" / "app_coverage";
+    std::filesystem::remove_all(dir);
+    const std::string w = (dir / "w").string();
+    EXPECT_EQ(errorOf({"world", "--builtin", "office", "--seed", "3", "--out", w, "--rooms", "3"}), "");
+    const auto run = [&](const char* duration) {
+        simp::sim::SimApp app;
+        std::ostringstream out;
+        EXPECT_TRUE(app.initialize({"sequence", "--world", w, "--seed", "4", "--out", (dir / duration).string(), "--duration",
+                                    duration, "--coverage"}, out));
+        app.run(out);
+        return out.str();
+    };
+    const std::string cut_short = run("20");
+    EXPECT_NE(cut_short.find("warning: coverage: "), std::string::npos) << cut_short;
+    EXPECT_NE(cut_short.find("goals reached in 20 s"), std::string::npos) << cut_short;
+    const std::string long_enough = run("600");
+    EXPECT_NE(long_enough.find("simp-sim: coverage: all "), std::string::npos) << long_enough;
+    EXPECT_EQ(long_enough.find("warning"), std::string::npos) << long_enough;
+}
+
+}  // namespace

@@ -58,6 +58,39 @@ std::optional<std::vector<Eigen::Vector2d>> planPath(const Raster& cspace, const
     return path;
 }
 
+std::vector<float> drivingDistances(const Raster& cspace, const Eigen::Vector2d& from) {
+    const std::size_t n = static_cast<std::size_t>(cspace.nx) * cspace.ny;
+    std::vector<float> g(n, std::numeric_limits<float>::infinity());
+    const int sx = cspace.cellX(from.x()), sy = cspace.cellY(from.y());
+    if (cspace.isBlocked(sx, sy)) return g;
+    const auto idx = [&](int cx, int cy) { return static_cast<std::size_t>(cy) * cspace.nx + cx; };
+    using Entry = std::pair<float, std::size_t>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+    g[idx(sx, sy)] = 0;
+    open.push({0.f, idx(sx, sy)});
+    while (!open.empty()) {
+        const auto [d, c] = open.top();
+        open.pop();
+        if (d > g[c]) continue;  // a stale entry
+        const int cx = static_cast<int>(c % cspace.nx), cy = static_cast<int>(c / cspace.nx);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                if (dx == 0 && dy == 0) continue;
+                const int nx = cx + dx, ny = cy + dy;
+                if (cspace.isBlocked(nx, ny)) continue;
+                if (dx != 0 && dy != 0 && (cspace.isBlocked(cx + dx, cy) || cspace.isBlocked(cx, cy + dy))) continue;
+                const std::size_t k = idx(nx, ny);
+                const float ng = d + static_cast<float>((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0);
+                if (ng < g[k]) {
+                    g[k] = ng;
+                    open.push({ng, k});
+                }
+            }
+    }
+    for (auto& v : g) v *= static_cast<float>(cspace.resolution_m);
+    return g;
+}
+
 std::vector<Eigen::Vector2d> shortcutPath(const Raster& cspace, const std::vector<Eigen::Vector2d>& path) {
     if (path.size() <= 2) return path;
     std::vector<Eigen::Vector2d> out{path.front()};

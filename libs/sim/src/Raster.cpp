@@ -62,6 +62,24 @@ Raster drivingObstacles(const world::World& world) {
     return obstacles;
 }
 
+std::vector<std::uint8_t> largestFreeArea(const Raster& cspace, const std::vector<float>& dist) {
+    cv::Mat1b free(cspace.ny, cspace.nx);
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx)
+            free(cy, cx) = dist[static_cast<std::size_t>(cy) * cspace.nx + cx] > 0 ? 255 : 0;
+    cv::Mat1i labels, stats;
+    cv::Mat centroids;
+    const int n = cv::connectedComponentsWithStats(free, labels, stats, centroids, 4, CV_32S);
+    int best = 0;  // label 0 = not free
+    for (int l = 1; l < n; ++l)
+        if (best == 0 || stats(l, cv::CC_STAT_AREA) > stats(best, cv::CC_STAT_AREA)) best = l;
+    std::vector<std::uint8_t> in(dist.size(), 0);
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx)
+            in[static_cast<std::size_t>(cy) * cspace.nx + cx] = best != 0 && labels(cy, cx) == best;
+    return in;
+}
+
 Raster inflate(const Raster& raster, double radius_m) {
     const auto d = clearance(raster);
     Raster out = raster;

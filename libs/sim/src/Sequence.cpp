@@ -99,12 +99,14 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
 
     const double dt = 1.0 / params.odometry.rate_hz;
     KidnapEvent kidnap;
+    CoverageProgress coverage;
     const KidnapParams kidnap_params{params.kidnap_at_s, params.kidnap_min_distance_m};
     TrajectoryParams trajectory = params.trajectory;
     if (trajectory.coverage_turn_deg <= 0) trajectory.coverage_turn_deg = 360.0 / params.cameras.count;
     const auto traj = generateTrajectory(obstacles, w.rooms, trajectory, params.epoch_s, dt, params.duration_s,
-                                         rng_traj, kidnap_params, &rng_kidnap, &kidnap);
+                                         rng_traj, kidnap_params, &rng_kidnap, &kidnap, &coverage);
     if (kidnap_params.at_s >= 0) summary.kidnap = kidnap;
+    if (trajectory.coverage) summary.coverage = coverage;
     const std::size_t jump_step = summary.kidnap ? kidnap.step : 0;  // 0: no teleport (pose 0 is the start)
     std::vector<double> times;
     for (const auto& p : traj) times.push_back(p.t_s);

@@ -122,6 +122,11 @@ void SimApp::run(std::ostream& out) {
         << s.phantom_detections << " phantoms, path " << s.path_length_m << " m; changes: " << s.changes.removed
         << " removed, " << s.changes.moved << " moved, " << s.changes.added << " added, " << s.changes.doors_closed
         << " doors closed" << (p.lidar.enabled ? "; " + std::to_string(s.scans) + " laser scans" : std::string()) << "\n";
+    if (s.coverage && s.coverage->all_reached_s >= 0)
+        out << "simp-sim: coverage: all " << s.coverage->goals << " goals reached by t = " << s.coverage->all_reached_s << " s\n";
+    else if (s.coverage)
+        out << "simp-sim: warning: coverage: " << s.coverage->reached << " of " << s.coverage->goals << " goals reached in "
+            << p.duration_s << " s: parts of the map were not seen (a longer --duration covers them)\n";
     if (s.kidnap) {
         const auto& k = *s.kidnap;
         out << "simp-sim: kidnapped at t = " << k.t_from_start_s << " s (step " << k.step << ") from (" << k.from.x

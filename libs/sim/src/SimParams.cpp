@@ -62,10 +62,16 @@ const io::OptionTable<TrajectoryParams>& TrajectoryParams::table() {
             .number("turn_in_place_rad", &O::turn_in_place_rad, "rad", ValueRange::finite(), "heading error above which the robot stops and turns in place")
             .number("spin_probability", &O::spin_probability, "", ValueRange::fraction(), "probability of a full turn on the spot on reaching a room goal")
             .choice("visit_order", &O::coverage, std::vector<std::pair<std::string, bool>>{{"shuffled", false}, {"coverage", true}},
-                    "room goals of each round shuffled (errands) or coverage (nearest room not yet visited, a full turn in every room: a mapping run; `--coverage`)")
+                    "room goals of each round shuffled (errands) or coverage (goals that bring every room within reach, visited in turn with a turn on the spot at each: a mapping run; `--coverage`)")
             .number("coverage_part_m", &O::coverage_part_m, "m", ValueRange::positive(), "coverage: each room's bounding box is cut into parts of about this size (at most 2 x 2), one goal each")
             .number("coverage_turn_deg", &O::coverage_turn_deg, "deg", ValueRange::between(0, 360),
                     "coverage: the turn on the spot at every goal; 0 = 360 / [cameras] count (each bearing passes a camera's axis)")
+            .number("coverage_reach_m", &O::coverage_reach_m, "m", ValueRange::atLeast(0),
+                    "coverage: further goals bring every part of a room within this distance of a goal (a straight line inside the room); 0 = the parts' goals only")
+            .number("coverage_min_gain_m2", &O::coverage_min_gain_m2, "m^2", ValueRange::positive(),
+                    "coverage: a further goal is added while it brings at least this much room area within reach")
+            .choice("coverage_order", &O::coverage_tour, std::vector<std::pair<std::string, bool>>{{"nearest", false}, {"tour", true}},
+                    "coverage: goals visited along one short tour by driving distance, the same every round (tour), or the nearest goal not yet visited, as the crow flies (nearest)")
             .number("waypoint_tolerance_m", &O::waypoint_tolerance_m, "m", ValueRange::positive(), "a waypoint is reached within this distance")
             .rule("speed_max_mps", [](const O& o) { return o.speed_max_mps >= o.speed_min_mps; }, "be >= speed_min_mps");
     return t;

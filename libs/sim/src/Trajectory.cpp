@@ -1,4 +1,5 @@
 #include <mrpt/math/wrap2pi.h>
+#include <simp/sim/CoverageGoals.h>
 #include <simp/sim/PathPlanner.h>
 #include <simp/sim/Trajectory.h>
 
@@ -32,26 +33,6 @@ std::optional<Eigen::Vector2d> nearestFree(const Raster& cspace, const Eigen::Ve
     return best;
 }
 
-/// Cells (index cy * nx + cx) of the largest 4-connected component of cells with clearance > 0:
-/// the free space the robot can drive in (pockets walled in by furniture are left out).
-std::vector<std::uint8_t> largestFreeComponent(const Raster& cspace, const std::vector<float>& dist) {
-    cv::Mat1b free(cspace.ny, cspace.nx);
-    for (int cy = 0; cy < cspace.ny; ++cy)
-        for (int cx = 0; cx < cspace.nx; ++cx)
-            free(cy, cx) = dist[static_cast<std::size_t>(cy) * cspace.nx + cx] > 0 ? 255 : 0;
-    cv::Mat1i labels, stats;
-    cv::Mat centroids;
-    const int n = cv::connectedComponentsWithStats(free, labels, stats, centroids, 4, CV_32S);
-    int best = 0;  // label 0 = not free
-    for (int l = 1; l < n; ++l)
-        if (best == 0 || stats(l, cv::CC_STAT_AREA) > stats(best, cv::CC_STAT_AREA)) best = l;
-    std::vector<std::uint8_t> in(dist.size(), 0);
-    for (int cy = 0; cy < cspace.ny; ++cy)
-        for (int cx = 0; cx < cspace.nx; ++cx)
-            in[static_cast<std::size_t>(cy) * cspace.nx + cx] = best != 0 && labels(cy, cx) == best;
-    return in;
-}
-
 /// Unicycle state and the current plan.
 struct Driver {
     mrpt::math::TPose2D pose;
@@ -67,12 +48,8 @@ std::vector<Eigen::Vector2d> roomGoals(const Raster& cspace, const world::RoomMa
     const auto dist = clearance(cspace);
     // Goals only where the robot can drive: the max-clearance cell of a part may lie in a pocket
     // closed off by furniture, and an unreachable goal leaves its room unvisited.
-    const auto reachable = largestFreeComponent(cspace, dist);
-    const int block = std::max(1, static_cast<int>(5.0 / cspace.resolution_m));
-    const auto idAt = [&](int cx, int cy) {
-        return rooms.empty() ? 1 + (cy / block) * (cspace.nx / block + 1) + cx / block
-                             : rooms.roomAt(cspace.centreX(cx), cspace.centreY(cy));
-    };
+    const auto reachable = largestFreeArea(cspace, dist);
+    const auto idAt = [&](int cx, int cy) { return goalAreaAt(cspace, rooms, cx, cy); };
     // Cell bounds of every room, to cut it into parts of about part_m x part_m.
     struct Bounds { int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1; };
     std::map<int, Bounds> bounds;
@@ -117,7 +94,7 @@ std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Ei
                                                   double min_distance_m, double margin_m, Rng& rng) {
     const auto dist = clearance(cspace);
     // the goals' free area: from anywhere else the robot could not plan on
-    const auto reachable = largestFreeComponent(cspace, dist);
+    const auto reachable = largestFreeArea(cspace, dist);
     std::vector<std::size_t> cells;
     for (int cy = 0; cy < cspace.ny; ++cy)
         for (int cx = 0; cx < cspace.nx; ++cx) {
@@ -141,7 +118,8 @@ void checkDuration(double duration_s, const std::string& what) {
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
                                                   double duration_s, Rng& rng, const KidnapParams& kidnap,
-                                                  Rng* kidnap_rng, KidnapEvent* kidnap_event) {
+                                                  Rng* kidnap_rng, KidnapEvent* kidnap_event,
+                                                  CoverageProgress* coverage) {
     if (!(dt_s > 0) || !(duration_s >= 0)) throw std::invalid_argument("generateTrajectory: dt must be > 0, duration >= 0");
     const bool kidnapped = kidnap.at_s >= 0;
     if (kidnapped && (!kidnap_rng || !kidnap_event))
@@ -154,35 +132,59 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
                                     std::to_string(kMaxTrajectorySteps) + " poses");
     const Raster cspace = inflate(obstacles, p.robot_radius_m + p.clearance_m);
     std::vector<Eigen::Vector2d> goals = roomGoals(cspace, rooms, p.coverage ? p.coverage_part_m : 0.0);
+    if (p.coverage && p.coverage_reach_m > 0)
+        goals = addReachGoals(cspace, rooms, std::move(goals), p.coverage_reach_m, p.coverage_min_gain_m2);
     if (goals.empty())
         throw std::runtime_error("generateTrajectory: no free space for a robot of radius " +
                                  std::to_string(p.robot_radius_m) + " m in the map");
 
     Driver d;
-    const Eigen::Vector2d start = goals[rng.index(goals.size())];
+    const std::size_t start_goal = rng.index(goals.size());
+    const Eigen::Vector2d start = goals[start_goal];
+    const std::vector<std::size_t> tour =
+        p.coverage && p.coverage_tour ? coverageTour(cspace, goals, start_goal) : std::vector<std::size_t>{};
     d.pose = {start.x(), start.y(), rng.uniform(-M_PI, M_PI)};
     std::vector<std::size_t> order;
     std::size_t order_pos = 0;
+    std::size_t leg_goal = start_goal;  // the goal the current leg drives to
+    std::vector<std::uint8_t> reached(goals.size(), 0);
+    reached[start_goal] = 1;
+    std::size_t n_reached = 1, step = 0;
+    if (coverage) *coverage = {goals.size(), 1, goals.size() == 1 ? 0.0 : -1.0};
+    const auto markReached = [&](std::size_t goal) {
+        if (reached[goal]) return;
+        reached[goal] = 1;
+        ++n_reached;
+        if (!coverage) return;
+        coverage->reached = n_reached;
+        if (n_reached == goals.size()) coverage->all_reached_s = static_cast<double>(step) * dt_s;
+    };
     int failures = 0;
 
     const auto newLeg = [&]() {
         // next room goal from a shuffled visiting order; unreachable goals are skipped
         for (int attempt = 0; attempt < static_cast<int>(goals.size()) + 1; ++attempt) {
+            if (order_pos >= order.size() && !tour.empty()) {
+                order = tour;  // the same tour every round
+                order_pos = 0;
+            }
             if (order_pos >= order.size()) {
                 order.resize(goals.size());
                 for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
                 for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
                 order_pos = 0;
             }
-            if (p.coverage) {  // the nearest goal of this round next (straight-line distance)
+            if (p.coverage && tour.empty()) {  // the nearest goal of this round next (straight-line distance)
                 const Eigen::Vector2d here(d.pose.x, d.pose.y);
                 const auto nearest = std::min_element(
                     order.begin() + static_cast<std::ptrdiff_t>(order_pos), order.end(),
                     [&](std::size_t a, std::size_t b) { return (goals[a] - here).norm() < (goals[b] - here).norm(); });
                 std::iter_swap(order.begin() + static_cast<std::ptrdiff_t>(order_pos), nearest);
             }
-            const Eigen::Vector2d goal = goals[order[order_pos++]];
+            leg_goal = order[order_pos++];
+            const Eigen::Vector2d goal = goals[leg_goal];
             const auto from = nearestFree(cspace, {d.pose.x, d.pose.y}, 0.6);
+            if (from && (goal - *from).norm() < 0.5) markReached(leg_goal);  // there already
             if (!from || (goal - *from).norm() < 0.5) continue;
             if (auto path = planPath(cspace, *from, goal)) {
                 d.waypoints = shortcutPath(cspace, *path);
@@ -206,6 +208,7 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
     }
     out.reserve(n);
     for (std::size_t k = 0; k < n; ++k) {
+        step = k;
         if (k == kidnap_step && kidnapped) {
             // lifted during step k: the motion integrated for it is discarded (the wheels did not turn)
             const mrpt::math::TPose2D from = out.back().pose;
@@ -232,6 +235,7 @@ std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const
             while (d.next < d.waypoints.size() &&
                    (d.waypoints[d.next] - Eigen::Vector2d(d.pose.x, d.pose.y)).norm() < p.waypoint_tolerance_m) {
                 ++d.next;
+                if (d.next == d.waypoints.size()) markReached(leg_goal);
                 if (d.next == d.waypoints.size() && (rng.bernoulli(p.spin_probability) || p.coverage))
                     d.spin_left_rad = p.coverage && p.coverage_turn_deg > 0 ? p.coverage_turn_deg / 180.0 * M_PI : 2 * M_PI;
             }

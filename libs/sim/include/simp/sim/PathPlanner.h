@@ -16,6 +16,10 @@ namespace simp::sim {
 std::optional<std::vector<Eigen::Vector2d>> planPath(const Raster& cspace, const Eigen::Vector2d& from,
                                                      const Eigen::Vector2d& to);
 
+/// Driving distance (m) from `from` to every cell of `cspace` along the 8-connected moves of
+/// planPath (infinity where not connected or blocked; all infinity when `from` is blocked).
+std::vector<float> drivingDistances(const Raster& cspace, const Eigen::Vector2d& from);
+
 /// Keeps only the waypoints needed so that consecutive ones see each other in `cspace`.
 std::vector<Eigen::Vector2d> shortcutPath(const Raster& cspace, const std::vector<Eigen::Vector2d>& path);
 

@@ -48,6 +48,10 @@ Raster inflate(const Raster& raster, double radius_m);
 /// Distance (m) of each free cell to the nearest blocked cell (0 on blocked cells).
 std::vector<float> clearance(const Raster& raster);
 
+/// Cells (index cy * nx + cx) of the largest 4-connected area of cells with clearance `dist` > 0:
+/// the free space a robot can drive in (pockets walled in by furniture are left out).
+std::vector<std::uint8_t> largestFreeArea(const Raster& cspace, const std::vector<float>& dist);
+
 /// True when the straight segment a-b (m) crosses no blocked cell (sampled every resolution/2).
 bool lineOfSight(const Raster& raster, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
 

@@ -25,6 +25,7 @@ struct SequenceSummary {
     ChangeSummary changes;
     double path_length_m = 0;          ///< driven path (m; the teleport of a kidnap not included)
     std::optional<KidnapEvent> kidnap; ///< the teleport, when params.kidnap_at_s >= 0
+    std::optional<CoverageProgress> coverage;  ///< a coverage run's progress ([trajectory] visit_order)
 };
 
 /// Simulates one sequence in `map_world` (changed by params.changes first) and writes

@@ -37,8 +37,16 @@ struct TrajectoryParams {
     double coverage_part_m = 3.0;
     /// In coverage, the turn on the spot at every goal (deg); 0 = 360 / the rig's camera count
     /// (set by the sequence: every bearing then passes through some camera's optical axis).
-    /// Default a full turn: doc/simulator.md says what a quarter turn changed.
-    double coverage_turn_deg = 360.0;
+    /// doc/simulator.md says what the quarter turn of the 4-camera rig changed.
+    double coverage_turn_deg = 0.0;
+    /// In coverage, further goals bring every part of a room within this distance of a goal
+    /// (m, a straight line inside the room; CoverageGoals.h); 0 = the parts' goals only.
+    double coverage_reach_m = 2.5;
+    /// ... while a further goal brings at least this much room area within reach (m^2).
+    double coverage_min_gain_m2 = 1.0;
+    /// In coverage, the goals are visited along one short tour (driving distance), the same
+    /// every round; false = the nearest goal (straight line) not yet visited this round.
+    bool coverage_tour = true;
 
     /// [trajectory] keys, declared once (SimParams.cpp).
     static const io::OptionTable<TrajectoryParams>& table();
@@ -75,14 +83,6 @@ struct KidnapEvent {
 std::optional<mrpt::math::TPose2D> drawKidnapPose(const Raster& cspace, const Eigen::Vector2d& from_m,
                                                   double min_distance_m, double margin_m, Rng& rng);
 
-/// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
-/// poses). `obstacles` = walls and object footprints of the world the robot drives in.
-/// With kidnap.at_s >= 0 the robot is teleported once, at the first pose at or after
-/// t0 + at_s (at least pose 1, at most the last one), to drawKidnapPose() drawn from
-/// `kidnap_rng` (a stream of its own: `rng` draws the same numbers up to the teleport as
-/// without it); the teleport is stored in `*kidnap_event`, and the robot plans from its new pose.
-/// \throw std::runtime_error when no goal is reachable (e.g. an empty map) or no pose for the
-/// kidnap qualifies; std::invalid_argument for a kidnap without kidnap_rng / kidnap_event.
 /// Longest simulated sequence, s (11.6 days): the `--duration` option and [sequence]
 /// duration_s are checked against it (1e300 once overflowed the step count, UB).
 constexpr double kMaxDuration_s = 1e6;
@@ -92,14 +92,27 @@ constexpr std::size_t kMaxTrajectorySteps = 10'000'000;
 /// Throws std::invalid_argument naming `what` unless 0 < duration_s <= kMaxDuration_s.
 void checkDuration(double duration_s, const std::string& what);
 
+/// How far a coverage run got: its goals, how many it reached, and when it had reached them all.
+struct CoverageProgress {
+    std::size_t goals = 0;      ///< goals of the run (CoverageGoals.h)
+    std::size_t reached = 0;    ///< goals reached at least once (the start goal included)
+    double all_reached_s = -1;  ///< time from the first pose when the last was first reached (s); < 0: never
+};
+
 /// Ground-truth poses every `dt_s` from t0_s for `duration_s` (n = floor(duration / dt) + 1
 /// poses). `obstacles` = walls and object footprints of the world the robot drives in.
-/// \throw std::runtime_error when no goal is reachable (e.g. an empty map);
-///        std::invalid_argument when duration_s > kMaxDuration_s or the poses would exceed
-///        kMaxTrajectorySteps.
+/// With kidnap.at_s >= 0 the robot is teleported once, at the first pose at or after
+/// t0 + at_s (at least pose 1, at most the last one), to drawKidnapPose() drawn from
+/// `kidnap_rng` (a stream of its own: `rng` draws the same numbers up to the teleport as
+/// without it); the teleport is stored in `*kidnap_event`, and the robot plans from its new pose.
+/// A coverage run (p.coverage) reports its progress in `*coverage` when given.
+/// \throw std::runtime_error when no goal is reachable (e.g. an empty map) or no pose for the
+///        kidnap qualifies; std::invalid_argument when duration_s > kMaxDuration_s, the poses
+///        would exceed kMaxTrajectorySteps, or a kidnap lacks kidnap_rng / kidnap_event.
 std::vector<io::StampedPose2D> generateTrajectory(const Raster& obstacles, const world::RoomMap& rooms,
                                                   const TrajectoryParams& p, double t0_s, double dt_s,
                                                   double duration_s, Rng& rng, const KidnapParams& kidnap = {},
-                                                  Rng* kidnap_rng = nullptr, KidnapEvent* kidnap_event = nullptr);
+                                                  Rng* kidnap_rng = nullptr, KidnapEvent* kidnap_event = nullptr,
+                                                  CoverageProgress* coverage = nullptr);
 
 }  // namespace simp::sim
