@@ -6,6 +6,23 @@
 #include <queue>
 
 namespace simp::sim {
+namespace {
+
+/// The 8-connected moves from free cell (cx, cy): f(nx, ny, length in cells) for every free
+/// neighbour; a diagonal move needs both cells it cuts the corner of free.
+template <typename F>
+void forEachMove(const Raster& cspace, int cx, int cy, F&& f) {
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            if (dx == 0 && dy == 0) continue;
+            const int nx = cx + dx, ny = cy + dy;
+            if (cspace.isBlocked(nx, ny)) continue;
+            if (dx != 0 && dy != 0 && (cspace.isBlocked(cx + dx, cy) || cspace.isBlocked(cx, cy + dy))) continue;
+            f(nx, ny, static_cast<float>((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0));
+        }
+}
+
+}  // namespace
 
 std::optional<std::vector<Eigen::Vector2d>> planPath(const Raster& cspace, const Eigen::Vector2d& from,
                                                      const Eigen::Vector2d& to) {
@@ -32,21 +49,15 @@ std::optional<std::vector<Eigen::Vector2d>> planPath(const Raster& cspace, const
         if (closed[c]) continue;
         closed[c] = 1;
         if (c == goal) break;
-        const int cx = static_cast<int>(c % cspace.nx), cy = static_cast<int>(c / cspace.nx);
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                if (dx == 0 && dy == 0) continue;
-                const int nx = cx + dx, ny = cy + dy;
-                if (cspace.isBlocked(nx, ny)) continue;
-                if (dx != 0 && dy != 0 && (cspace.isBlocked(cx + dx, cy) || cspace.isBlocked(cx, cy + dy))) continue;
-                const std::size_t k = idx(nx, ny);
-                const float ng = g[c] + static_cast<float>((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0);
-                if (ng < g[k]) {
-                    g[k] = ng;
-                    parent[k] = static_cast<std::int64_t>(c);
-                    open.push({ng + h(nx, ny), k});
-                }
+        forEachMove(cspace, static_cast<int>(c % cspace.nx), static_cast<int>(c / cspace.nx), [&](int nx, int ny, float step) {
+            const std::size_t k = idx(nx, ny);
+            const float ng = g[c] + step;
+            if (ng < g[k]) {
+                g[k] = ng;
+                parent[k] = static_cast<std::int64_t>(c);
+                open.push({ng + h(nx, ny), k});
             }
+        });
     }
     if (!closed[goal]) return std::nullopt;
     std::vector<Eigen::Vector2d> path;
@@ -72,20 +83,14 @@ std::vector<float> drivingDistances(const Raster& cspace, const Eigen::Vector2d&
         const auto [d, c] = open.top();
         open.pop();
         if (d > g[c]) continue;  // a stale entry
-        const int cx = static_cast<int>(c % cspace.nx), cy = static_cast<int>(c / cspace.nx);
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                if (dx == 0 && dy == 0) continue;
-                const int nx = cx + dx, ny = cy + dy;
-                if (cspace.isBlocked(nx, ny)) continue;
-                if (dx != 0 && dy != 0 && (cspace.isBlocked(cx + dx, cy) || cspace.isBlocked(cx, cy + dy))) continue;
-                const std::size_t k = idx(nx, ny);
-                const float ng = d + static_cast<float>((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0);
-                if (ng < g[k]) {
-                    g[k] = ng;
-                    open.push({ng, k});
-                }
+        forEachMove(cspace, static_cast<int>(c % cspace.nx), static_cast<int>(c / cspace.nx), [&](int nx, int ny, float step) {
+            const std::size_t k = idx(nx, ny);
+            const float ng = d + step;
+            if (ng < g[k]) {
+                g[k] = ng;
+                open.push({ng, k});
             }
+        });
     }
     for (auto& v : g) v *= static_cast<float>(cspace.resolution_m);
     return g;
