@@ -79,6 +79,7 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("duplicate_min_overlap = -0.1", "duplicate_min_overlap");
     expectThrowNaming("twin_max_support_ratio = 2", "twin_max_support_ratio");
     expectThrowNaming("twin_min_likelihood = -0.05", "twin_min_likelihood");
+    expectThrowNaming("skip_needs_no_detection = sometimes", "skip_needs_no_detection");
     expectThrowNaming("duplicate_center_radius_m = wide", "duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa", "class_duplicate_center_radius_m");
     expectThrowNaming("class_duplicate_center_radius_m = sofa:-1", "sofa");

@@ -116,6 +116,8 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .number("trigger_angle_rad", &O::trigger_angle_rad, "rad", between(0, 10), "authors' `odom_trigerTH[1]`")
             .number("tau_cost", &O::tau_cost, "", between(0, 1), "authors' `costTH`")
             .number("tau_purge", &O::tau_purge, "", between(0, 1e6), "paper: empirical; purge when n_match / n_skip < 0.5")
+            .flag("skip_needs_no_detection", &O::skip_needs_no_detection,
+                  "a window is a miss (n_skip) only with no detection of the class at the object's place, at any confidence (false: the paper)")
             .integer("min_local_detections", &O::min_local_detections, between(1, 1e6), "authors' `totalSeenTH`")
             .number("min_local_support", &O::min_local_support, "detections per time step", between(0, 1e3),
                     "authors' `purgeDetections` (`times_matched < 0.3 detc_cnt` dropped)")

@@ -57,6 +57,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_windows_missed_behind_new.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
+    m_window_weak.clear();
     m_window_active.clear();
     m_window_active_behind_new.clear();
     m_window_candidates.clear();
@@ -240,25 +241,32 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         const std::string& name = obs.classNameOf(d);
         const ClassFilter& f = m_options.filterOf(name);
         if (f.max_range_m <= 0) { ++m_stats.rejected_class; continue; }
-        if (d.confidence < f.min_confidence) { ++m_stats.rejected_confidence; continue; }
+        // A weak detection (under the class's confidence) passes the other filters silently: kept
+        // aside, it only tells the purge rule that the object at its place was seen.
+        const bool weak = d.confidence < f.min_confidence;
+        if (weak) ++m_stats.rejected_confidence;
+        if (weak && !m_options.skip_needs_no_detection) continue;
+        const auto reject = [&](std::size_t& counter) {
+            if (!weak) ++counter;
+        };
         const double range = d.box_in_camera.center.norm();
-        if (range < f.min_range_m || range > f.max_range_m) { ++m_stats.rejected_range; continue; }
+        if (range < f.min_range_m || range > f.max_range_m) { reject(m_stats.rejected_range); continue; }
         LocalObject o;
         o.box = objectBoxFromDetection(obs.boxInWorld(i, robot_pose));
-        if (!o.box.isValid(1e-4)) { ++m_stats.rejected_invalid; continue; }
+        if (!o.box.isValid(1e-4)) { reject(m_stats.rejected_invalid); continue; }
         // A centre outside the building (unknown space reached from the plan's border, behind the
         // outer wall) is a depth error: the room lookup's search radius would otherwise give it the
         // room next to it. Unknown islands inside (furniture drawn grey) are not outside.
         if (m_walls.isOutside(o.box.center.x(), o.box.center.y())) {
-            ++m_stats.rejected_outside;
+            reject(m_stats.rejected_outside);
             continue;
         }
         if (current_room != 0) {
             const int r = roomOf(o.box.center.x(), o.box.center.y());
-            if (r != 0 && r != current_room) { ++m_stats.rejected_room; continue; }
+            if (r != 0 && r != current_room) { reject(m_stats.rejected_room); continue; }
         }
         o.class_id = mapClassOf(name);
-        dets.push_back(o);
+        (weak ? m_window_weak : dets).push_back(o);
     }
     insertIntoLocalMap(dets);
 }

@@ -254,6 +254,7 @@ void ObjectMapBuilder::flush() {
     const double window_steps = static_cast<double>(m_window_steps);
     m_window_steps = 0;
     if (m_local.empty() && m_window_active.empty()) {
+        m_window_weak.clear();
         m_window_candidates.clear();
         m_window_active_behind_new.clear();
         return;
@@ -319,11 +320,35 @@ void ObjectMapBuilder::flush() {
             ++m_stats.added;
         }
     }
-    // n_skip for active map objects that no prediction was associated with.
+    // n_skip for active map objects that no prediction was associated with, unless a detection of
+    // the class that the map's evidence left out (under the class's confidence; a local object seen
+    // in too few frames) lies at the object's place, better there than at any other active object
+    // of its class (skip_needs_no_detection): a weakly detected object is not absent, while a twin
+    // next to a well-seen object still collects its misses.
+    std::unordered_set<std::int64_t> detected;
+    if (m_options.skip_needs_no_detection) {
+        std::vector<const LocalObject*> left_out;
+        for (const auto& l : m_local)
+            if (std::find(locals.begin(), locals.end(), &l) == locals.end()) left_out.push_back(&l);
+        for (const auto& w : m_window_weak) left_out.push_back(&w);
+        for (const LocalObject* l : left_out) {
+            std::int64_t best = -1;
+            double best_cost = m_options.tau_cost;
+            for (const std::int64_t id : m_window_active) {
+                const auto it = index_of.find(id);
+                if (it == index_of.end() || m_g.objects[it->second].class_id != l->class_id) continue;
+                const world::MapObject& o = m_g.objects[it->second];
+                const geometry::Box3D estimate = estimateOf(o);
+                const double c = associationCost(estimate, objectDistribution(o, estimate), l->box);
+                if (c < best_cost) best_cost = c, best = id;
+            }
+            if (best >= 0) detected.insert(best);
+        }
+    }
     for (const std::int64_t id : m_window_active)
         if (!matched.count(id))
             if (const auto it = index_of.find(id); it != index_of.end()) {
-                ++m_g.objects[it->second].n_skip;
+                if (!detected.count(id)) ++m_g.objects[it->second].n_skip;
                 ++m_windows_missed[id];
             }
     // Expected only behind a possible displaced copy of itself: evidence of a move, not of a
@@ -366,6 +391,7 @@ void ObjectMapBuilder::flush() {
     }
 
     m_local.clear();
+    m_window_weak.clear();
     m_window_active.clear();
     m_window_active_behind_new.clear();
     m_window_candidates.clear();

@@ -44,6 +44,11 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// @{
     double tau_cost = 0.3;           ///< merge when C < tau_cost; authors' costTH
     double tau_purge = 0.5;          ///< purge when n_match / n_skip < tau_purge (empirical, paper)
+    /// A window counts as a miss (n_skip) only when no detection of the object's class lies at its
+    /// place (association cost < tau_cost), whatever kept that detection out of the map's evidence
+    /// (confidence under the class's threshold, a local object seen in too few frames). false = the
+    /// paper: every window the object was active in and unmatched.
+    bool skip_needs_no_detection = true;
     int min_local_detections = 1;    ///< a local object needs this many detections to be integrated; authors' totalSeenTH
     /// A local object needs at least this many detections per time step of its window (authors'
     /// purgeDetections: times_matched >= 0.3 detc_cnt): one-off detections never reach the map. 0 = off.

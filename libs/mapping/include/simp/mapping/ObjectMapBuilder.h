@@ -157,6 +157,9 @@ class ObjectMapBuilder {
     TOptions m_options;
     world::ObjectMapData m_g;       ///< the global object map m_g
     std::vector<LocalObject> m_local;  ///< the local map m^_g
+    /// Detections of the window under their class's confidence threshold (world frame; they are
+    /// no evidence for the map, but no miss of an object at their place: skip_needs_no_detection).
+    std::vector<LocalObject> m_window_weak;
     std::set<std::int64_t> m_window_active;     ///< map ids active in some frame of the window
     std::set<std::int64_t> m_window_active_behind_new;  ///< of those, ids never active but behind a possible displaced copy
     std::set<std::int64_t> m_window_candidates; ///< map ids visible in some frame of the window
