@@ -2,9 +2,9 @@
 /// Omni3D predictions JSON, its odometry path -> TUM. doc/detector-io.md.
 #include <simp/io/CommandLine.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/DetectionRawlog.h>
-#include <simp/labels/Omni3DPredictions.h>
-#include <simp/labels/RosDetectionsCsv.h>
+#include <simp/detector_io/DetectionRawlog.h>
+#include <simp/detector_io/Omni3DPredictions.h>
+#include <simp/detector_io/RosDetectionsCsv.h>
 
 #include <exception>
 #include <iostream>
@@ -23,10 +23,10 @@ int main(int argc, char** argv) {
         if (!args.has("out-csv") && !args.has("out-json") && !args.has("out-tum"))
             throw std::invalid_argument("nothing to do: give --out-csv, --out-json and/or --out-tum");
         const auto frames = simp::obs::readRawlog(args.value("rawlog"));
-        const auto set = simp::labels::detectionsFromFrames(frames);
-        if (args.has("out-csv")) simp::labels::writeRosDetectionsCsv(args.value("out-csv"), set);
-        if (args.has("out-json")) simp::labels::writeOmni3DPredictions(args.value("out-json"), set);
-        if (args.has("out-tum")) simp::io::writeTum(args.value("out-tum"), simp::labels::integrateOdometry(frames));
+        const auto set = simp::detector_io::detectionsFromFrames(frames);
+        if (args.has("out-csv")) simp::detector_io::writeRosDetectionsCsv(args.value("out-csv"), set);
+        if (args.has("out-json")) simp::detector_io::writeOmni3DPredictions(args.value("out-json"), set);
+        if (args.has("out-tum")) simp::io::writeTum(args.value("out-tum"), simp::detector_io::integrateOdometry(frames));
         std::cout << "exported " << frames.size() << " frames, " << set.images.size() << " images\n";
         return 0;
     } catch (const std::exception& e) {

@@ -2,8 +2,8 @@
 /// (actions + sensory frames). doc/detector-io.md.
 #include <simp/io/CommandLine.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/DetectionRawlog.h>
-#include <simp/labels/Omni3DPredictions.h>
+#include <simp/detector_io/DetectionRawlog.h>
+#include <simp/detector_io/Omni3DPredictions.h>
 
 #include <exception>
 #include <iostream>
@@ -19,12 +19,12 @@ int main(int argc, char** argv) {
             .required("rig", "rig.ini|rig.json", "the camera rig")
             .required("out", "Q.rawlog", "the rawlog to write");
         if (!args.parse(argc, argv, std::cout)) return 0;
-        const auto set = simp::labels::readOmni3DPredictions(args.value("predictions"));
+        const auto set = simp::detector_io::readOmni3DPredictions(args.value("predictions"));
         const auto poses = simp::io::readTum(args.value("poses"));
         if (poses.empty()) throw std::runtime_error(args.value("poses") + ": no pose (a TUM file of t x y z qx qy qz qw lines)");
-        const auto rig = simp::labels::loadCameraRig(args.value("rig"));
-        const auto frames = simp::labels::framesFromDetections(set, poses, rig, args.value("predictions"));
-        simp::labels::writeDetectionRawlog(args.value("out"), frames);
+        const auto rig = simp::detector_io::loadCameraRig(args.value("rig"));
+        const auto frames = simp::detector_io::framesFromDetections(set, poses, rig, args.value("predictions"));
+        simp::detector_io::writeDetectionRawlog(args.value("out"), frames);
         std::size_t n = 0;
         for (const auto& im : set.images) n += im.detections.size();
         std::cout << "wrote " << args.value("out") << ": " << frames.size() << " frames, " << set.images.size()

@@ -2,8 +2,8 @@
 /// robot poses + camera rig -> rawlog. doc/detector-io.md.
 #include <simp/io/CommandLine.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/DetectionRawlog.h>
-#include <simp/labels/RosDetectionsCsv.h>
+#include <simp/detector_io/DetectionRawlog.h>
+#include <simp/detector_io/RosDetectionsCsv.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <exception>
@@ -20,12 +20,12 @@ int main(int argc, char** argv) {
             .required("rig", "rig.ini|rig.json", "the camera rig")
             .required("out", "Q.rawlog", "the rawlog to write");
         if (!args.parse(argc, argv, std::cout)) return 0;
-        const auto rig = simp::labels::loadCameraRig(args.value("rig"));
-        const auto set = simp::labels::readRosDetectionsCsv(args.value("csv"), simp::obs::defaultClassNames(), rig);
+        const auto rig = simp::detector_io::loadCameraRig(args.value("rig"));
+        const auto set = simp::detector_io::readRosDetectionsCsv(args.value("csv"), simp::obs::defaultClassNames(), rig);
         const auto poses = simp::io::readTum(args.value("poses"));
         if (poses.empty()) throw std::runtime_error(args.value("poses") + ": no pose (a TUM file of t x y z qx qy qz qw lines)");
-        const auto frames = simp::labels::framesFromDetections(set, poses, rig, args.value("csv"));
-        simp::labels::writeDetectionRawlog(args.value("out"), frames);
+        const auto frames = simp::detector_io::framesFromDetections(set, poses, rig, args.value("csv"));
+        simp::detector_io::writeDetectionRawlog(args.value("out"), frames);
         std::cout << "wrote " << args.value("out") << ": " << frames.size() << " frames, " << set.images.size()
                   << " images\n";
         return 0;

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/CameraRig.h>
-#include <simp/labels/DetectionRawlog.h>
-#include <simp/labels/Omni3DBox.h>
-#include <simp/labels/Omni3DPredictions.h>
-#include <simp/labels/RosDetectionsCsv.h>
+#include <simp/detector_io/CameraRig.h>
+#include <simp/detector_io/DetectionRawlog.h>
+#include <simp/detector_io/Omni3DBox.h>
+#include <simp/detector_io/Omni3DPredictions.h>
+#include <simp/detector_io/RosDetectionsCsv.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <cstdlib>
@@ -88,34 +88,34 @@ TEST(Omni3DBox, CornersFollowCubeRcnnConvention) {
     // get_cuboid_verts_faces: x = +-L/2, y = +-H/2, z = +-W/2; v0 = (-,-,-), v1 = (+,-,-),
     // v2 = (+,+,-), v3 = (-,+,-), v4..v7 the same at +z.
     const double W = 0.5, H = 0.9, L = 1.6;
-    const auto box = labels::boxFromOmni3D({1, 2, 3}, {W, H, L}, Eigen::Matrix3d::Identity());
-    const auto v = labels::omni3DCorners(box);
+    const auto box = detector_io::boxFromOmni3D({1, 2, 3}, {W, H, L}, Eigen::Matrix3d::Identity());
+    const auto v = detector_io::omni3DCorners(box);
     const double sx[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, sy[8] = {-1, -1, 1, 1, -1, -1, 1, 1},
                  sz[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
     for (int i = 0; i < 8; ++i)
         EXPECT_LT((v[static_cast<std::size_t>(i)] - Eigen::Vector3d(1 + sx[i] * L / 2, 2 + sy[i] * H / 2, 3 + sz[i] * W / 2)).norm(),
                   1e-15)
             << "v" << i;
-    EXPECT_LT((labels::omni3DDimensions(box) - Eigen::Vector3d(W, H, L)).norm(), 1e-15);
+    EXPECT_LT((detector_io::omni3DDimensions(box) - Eigen::Vector3d(W, H, L)).norm(), 1e-15);
 }
 
 TEST(Omni3DBox, BoxFromCornersRecoversRandomBoxes) {
     std::mt19937 rng(7);
     for (int k = 0; k < 200; ++k) {
         const auto b = randomBox(rng);
-        const auto f = labels::boxFromOmni3DCorners(labels::omni3DCorners(b));
+        const auto f = detector_io::boxFromOmni3DCorners(detector_io::omni3DCorners(b));
         EXPECT_LT((f.center - b.center).norm(), 1e-12);
         EXPECT_LT((f.size - b.size).norm(), 1e-12);
         EXPECT_LT((f.R - b.R).norm(), 1e-12);
     }
     std::array<Eigen::Vector3d, 8> flat;
     flat.fill(Eigen::Vector3d::Zero());
-    EXPECT_THROW(labels::boxFromOmni3DCorners(flat), std::invalid_argument);
+    EXPECT_THROW(detector_io::boxFromOmni3DCorners(flat), std::invalid_argument);
 }
 
 TEST(CameraRig, IniAndJsonAgree) {
-    const auto a = labels::loadCameraRig(kData + "rig.ini");
-    const auto b = labels::loadCameraRig(kData + "rig.json");
+    const auto a = detector_io::loadCameraRig(kData + "rig.ini");
+    const auto b = detector_io::loadCameraRig(kData + "rig.json");
     ASSERT_EQ(a.cameras.size(), 2u);
     ASSERT_EQ(b.cameras.size(), 2u);
     for (std::size_t i = 0; i < 2; ++i) {
@@ -130,10 +130,10 @@ TEST(CameraRig, IniAndJsonAgree) {
 }
 
 TEST(ImportOmni3D, FramesPosesAndBoxes) {
-    const auto set = labels::readOmni3DPredictions(kData + "predictions.json");
-    const auto rig = labels::loadCameraRig(kData + "rig.ini");
+    const auto set = detector_io::readOmni3DPredictions(kData + "predictions.json");
+    const auto rig = detector_io::loadCameraRig(kData + "rig.ini");
     const auto poses = io::readTum(kData + "poses.tum");
-    const auto frames = labels::framesFromDetections(set, poses, rig, "predictions.json");
+    const auto frames = detector_io::framesFromDetections(set, poses, rig, "predictions.json");
     ASSERT_EQ(frames.size(), 3u);  // t = 100.5 (two cameras), 101.5, 102.5
     EXPECT_EQ(frames[0].observations.size(), 2u);
     EXPECT_NEAR(frames[0].odometry_increment->x, 0.0, 1e-15);
@@ -192,13 +192,13 @@ TEST(DetectorTools, RoundTripsAreLossless) {
 }
 
 TEST(DetectorBadInput, MissingFile) {
-    const auto rig = labels::loadCameraRig(kData + "rig.ini");
-    EXPECT_NE(errorOf([] { labels::readOmni3DPredictions("/nonexistent/p.json"); }).find("/nonexistent/p.json: file not found"),
+    const auto rig = detector_io::loadCameraRig(kData + "rig.ini");
+    EXPECT_NE(errorOf([] { detector_io::readOmni3DPredictions("/nonexistent/p.json"); }).find("/nonexistent/p.json: file not found"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { labels::readRosDetectionsCsv("/nonexistent/d.csv", obs::defaultClassNames(), rig); })
+    EXPECT_NE(errorOf([&] { detector_io::readRosDetectionsCsv("/nonexistent/d.csv", obs::defaultClassNames(), rig); })
                   .find("/nonexistent/d.csv: file not found"),
               std::string::npos);
-    EXPECT_NE(errorOf([] { labels::loadCameraRig("/nonexistent/rig.ini"); }).find("rig.ini: file not found"), std::string::npos);
+    EXPECT_NE(errorOf([] { detector_io::loadCameraRig("/nonexistent/rig.ini"); }).find("rig.ini: file not found"), std::string::npos);
     EXPECT_NE(runTool("simp-import-omni3d --predictions /nonexistent/p.json --poses " + kData + "poses.tum --rig " +
                       kData + "rig.ini --out /tmp/x.rawlog"),
               0);
@@ -207,23 +207,23 @@ TEST(DetectorBadInput, MissingFile) {
 TEST(DetectorBadInput, WrongColumnCount) {
     const std::string f = outDir("bad_columns") + "/d.csv";
     writeText(f, "# header\n100.5,CAMERA_0\n101.5,CAMERA_0,1,2,3\n");
-    const auto rig = labels::loadCameraRig(kData + "rig.ini");
-    const std::string e = errorOf([&] { labels::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
+    const auto rig = detector_io::loadCameraRig(kData + "rig.ini");
+    const std::string e = errorOf([&] { detector_io::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
     EXPECT_NE(e.find(f + ": line 3: wrong column count 5"), std::string::npos) << e;
 }
 
 TEST(DetectorBadInput, NonNumber) {
-    const auto rig = labels::loadCameraRig(kData + "rig.ini");
+    const auto rig = detector_io::loadCameraRig(kData + "rig.ini");
     std::string row = slurp(kData + "detections.csv");
     const std::string f = outDir("bad_number") + "/d.csv";
     writeText(f, row.replace(row.find("100.5,CAMERA_0,0,"), 17, "100.5,CAMERA_0,abc,"));
-    const std::string e = errorOf([&] { labels::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
+    const std::string e = errorOf([&] { detector_io::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
     EXPECT_NE(e.find(f + ": line 2: column 3: expected a finite number, got 'abc'"), std::string::npos) << e;
 
     const std::string j = outDir("bad_number_json") + "/p.json";
     writeText(j, R"({"predictions": [{"timestamp": 1, "camera": "CAMERA_0", "category": "chair", "score": "high",
                   "center_cam": [0,0,1], "dimensions": [1,1,1], "R_cam": [[1,0,0],[0,1,0],[0,0,1]]}]})");
-    const std::string ej = errorOf([&] { labels::readOmni3DPredictions(j); });
+    const std::string ej = errorOf([&] { detector_io::readOmni3DPredictions(j); });
     EXPECT_NE(ej.find(j + ": predictions[0].score: expected a number"), std::string::npos) << ej;
 }
 
@@ -231,14 +231,14 @@ TEST(DetectorBadInput, UnknownClass) {
     const std::string j = outDir("bad_class") + "/p.json";
     writeText(j, R"({"predictions": [{"timestamp": 1, "camera": "CAMERA_0", "category": "unicorn", "score": 0.5,
                   "center_cam": [0,0,1], "dimensions": [1,1,1], "R_cam": [[1,0,0],[0,1,0],[0,0,1]]}]})");
-    const std::string e = errorOf([&] { labels::readOmni3DPredictions(j); });
+    const std::string e = errorOf([&] { detector_io::readOmni3DPredictions(j); });
     EXPECT_NE(e.find(j + ": predictions[0].category: unknown class 'unicorn'"), std::string::npos) << e;
 
-    const auto rig = labels::loadCameraRig(kData + "rig.ini");
+    const auto rig = detector_io::loadCameraRig(kData + "rig.ini");
     std::string csv = slurp(kData + "detections.csv");
     const std::string f = outDir("bad_class_csv") + "/d.csv";
     writeText(f, csv.replace(csv.find(",0.97000002861022949,3"), 22, ",0.97000002861022949,14"));
-    const std::string ec = errorOf([&] { labels::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
+    const std::string ec = errorOf([&] { detector_io::readRosDetectionsCsv(f, obs::defaultClassNames(), rig); });
     EXPECT_NE(ec.find(f + ": line 5: column 28: unknown class 14"), std::string::npos) << ec;
 }
 
@@ -246,12 +246,12 @@ TEST(DetectorBadInput, MissingKey) {
     const std::string j = outDir("missing_key") + "/p.json";
     writeText(j, R"({"predictions": [{"timestamp": 1, "camera": "CAMERA_0", "category": "chair", "score": 0.5,
                   "center_cam": [0,0,1], "R_cam": [[1,0,0],[0,1,0],[0,0,1]]}]})");
-    const std::string e = errorOf([&] { labels::readOmni3DPredictions(j); });
+    const std::string e = errorOf([&] { detector_io::readOmni3DPredictions(j); });
     EXPECT_NE(e.find(j + ": predictions[0].dimensions: missing key"), std::string::npos) << e;
 
     const std::string r = outDir("missing_key_rig") + "/rig.json";
     writeText(r, R"({"cameras": [{"name": "C", "x": 0, "y": 0, "z": 1, "yaw_rad": 0, "fx": 1, "fy": 1, "cx": 1, "cy": 1, "width": 2}]})");
-    const std::string er = errorOf([&] { labels::loadCameraRig(r); });
+    const std::string er = errorOf([&] { detector_io::loadCameraRig(r); });
     EXPECT_NE(er.find(r + ": cameras[0].height: missing key"), std::string::npos) << er;
 }
 
@@ -259,15 +259,15 @@ TEST(DetectorBadInput, BadRotationAndOutsidePoses) {
     const std::string j = outDir("bad_rotation") + "/p.json";
     writeText(j, R"({"predictions": [{"timestamp": 1, "camera": "CAMERA_0", "category": "chair", "score": 0.5,
                   "center_cam": [0,0,1], "dimensions": [1,1,1], "R_cam": [[2,0,0],[0,1,0],[0,0,1]]}]})");
-    const std::string e = errorOf([&] { labels::readOmni3DPredictions(j); });
+    const std::string e = errorOf([&] { detector_io::readOmni3DPredictions(j); });
     EXPECT_NE(e.find(j + ": predictions[0]"), std::string::npos) << e;
     // Inside the file but outside the poses' time range: names the image and camera.
     const std::string k = outDir("outside_poses") + "/p.json";
     writeText(k, R"({"predictions": [{"timestamp": 50, "camera": "CAMERA_0", "category": "chair", "score": 0.5,
                   "center_cam": [0,0,1], "dimensions": [1,1,1], "R_cam": [[1,0,0],[0,1,0],[0,0,1]]}]})");
-    const auto set = labels::readOmni3DPredictions(k);
+    const auto set = detector_io::readOmni3DPredictions(k);
     const std::string eo = errorOf([&] {
-        labels::framesFromDetections(set, io::readTum(kData + "poses.tum"), labels::loadCameraRig(kData + "rig.ini"), k);
+        detector_io::framesFromDetections(set, io::readTum(kData + "poses.tum"), detector_io::loadCameraRig(kData + "rig.ini"), k);
     });
     EXPECT_NE(eo.find("image 0 (camera 'CAMERA_0', t=50"), std::string::npos) << eo;
     EXPECT_NE(eo.find("outside the poses' range"), std::string::npos) << eo;

@@ -3,9 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/CameraRig.h>
-#include <simp/labels/DetectionSet.h>
-#include <simp/labels/Omni3DPredictions.h>
+#include <simp/detector_io/CameraRig.h>
+#include <simp/detector_io/DetectionSet.h>
+#include <simp/detector_io/Omni3DPredictions.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,10 +18,10 @@ const std::string kData = std::string(SIMP_SOURCE_DIR) + "/tests/data/detector_i
 }
 
 TEST(DetectorImportHostile, EmptyPosesIsAnErrorNotACrash) {
-    const auto set = labels::readOmni3DPredictions(kData + "predictions.json");
+    const auto set = detector_io::readOmni3DPredictions(kData + "predictions.json");
     ASSERT_FALSE(set.images.empty());
     try {
-        labels::framesFromDetections(set, {}, labels::loadCameraRig(kData + "rig.ini"), "predictions.json");
+        detector_io::framesFromDetections(set, {}, detector_io::loadCameraRig(kData + "rig.ini"), "predictions.json");
         FAIL() << "accepted without poses";
     } catch (const std::runtime_error& e) {
         EXPECT_THAT(e.what(), HasSubstr("predictions.json: image"));
@@ -36,7 +36,7 @@ TEST(DetectorImportHostile, HugeRigImageIsRejected) {
     std::ofstream(path) << "[rig]\ncameras = C\n[C]\nx=0\ny=0\nz=1\nyaw_rad=0\nfx=500\nfy=500\ncx=320\ncy=240\n"
                            "width=2000000000\nheight=2000000000\n";
     try {
-        labels::loadCameraRig(path);
+        detector_io::loadCameraRig(path);
         FAIL() << "accepted";
     } catch (const std::exception& e) {
         EXPECT_THAT(e.what(), HasSubstr("rig.ini"));

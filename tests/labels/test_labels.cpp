@@ -6,7 +6,7 @@
 #include <simp/camera/RayCastVisibility.h>
 #include <simp/labels/LabelGenerator.h>
 #include <simp/labels/LabelsApp.h>
-#include <simp/labels/Omni3DBox.h>
+#include <simp/detector_io/Omni3DBox.h>
 #include <simp/world/World.h>
 
 #include <filesystem>
@@ -179,8 +179,8 @@ TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
         ASSERT_TRUE(b->detection && c->detection);
         EXPECT_EQ(b->detection->class_name, "table");
         EXPECT_LT((b->box_cam.center - Eigen::Vector3d(0, 0.5, 3.0)).norm(), 1e-12);
-        EXPECT_LT((labels::omni3DDimensions(b->box_cam) - Eigen::Vector3d(0.8, 1.0, 0.8)).norm(), 1e-12);
-        EXPECT_LT((labels::omni3DDimensions(c->box_cam) - Eigen::Vector3d(1.0, 1.0, 0.05)).norm(), 1e-12);
+        EXPECT_LT((detector_io::omni3DDimensions(b->box_cam) - Eigen::Vector3d(0.8, 1.0, 0.8)).norm(), 1e-12);
+        EXPECT_LT((detector_io::omni3DDimensions(c->box_cam) - Eigen::Vector3d(1.0, 1.0, 0.05)).norm(), 1e-12);
         EXPECT_LT((b->projection.bbox_proj - manualProjection(im, w.objects.objects[1].box)).norm(), 1e-9);
         EXPECT_NEAR(c->projection.truncation, 0.5, 0.03);
         EXPECT_DOUBLE_EQ(b->visibility, 1.0);
@@ -254,7 +254,7 @@ TEST(CameraFrames, PoseFromRobotPosesAndRig) {
     // Robot at x = t - 1 heading +x; at t = 0.5 it is at x = -0.5, the camera 0.5 m ahead at (0, 0, 1).
     io::writeTum(d + "/poses.tum", {{0.0, {-1.0, 0.0, 0.0}}, {1.0, {0.0, 0.0, 0.0}}});
     std::ofstream(d + "/frames.json") << R"({"images": [{"id": 7, "file_path": "a.png", "camera": "FRONT", "timestamp": 0.5}]})";
-    const auto rig = labels::loadCameraRig(d + "/rig.json");
+    const auto rig = detector_io::loadCameraRig(d + "/rig.json");
     const auto poses = io::readTum(d + "/poses.tum");
     const auto ims = labels::readCameraFrames(d + "/frames.json", &rig, &poses);
     ASSERT_EQ(ims.size(), 1u);

@@ -8,7 +8,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
-#include <simp/labels/DetectionRawlog.h>
+#include <simp/detector_io/DetectionRawlog.h>
 #include <simp/stats/GroundTruthMatch.h>
 #include <simp/stats/NoiseFit.h>
 #include <simp/stats/StatsApp.h>
@@ -109,7 +109,7 @@ void simulate(const std::string& dir, const world::ObjectMapData& w, const std::
         out.push_back(f);
     }
     io::writeTum(dir + "/groundtruth.tum", poses);
-    labels::writeDetectionRawlog(dir + "/sequence.rawlog", out);
+    detector_io::writeDetectionRawlog(dir + "/sequence.rawlog", out);
 }
 
 using simp_test::errorOf;

@@ -1,5 +1,5 @@
 /// \file CameraFrames.cpp
-#include "JsonUtil.h"
+#include <simp/world/JsonRead.h>
 
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
@@ -15,7 +15,7 @@ namespace simp::labels {
 namespace {
 
 /// Fills K, size and pose of `im` from the rig camera and the interpolated robot pose.
-void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
+void poseFromRig(PosedImage& im, const nlohmann::json& o, const detector_io::CameraRig* rig,
                  const std::vector<io::StampedPose2D>* poses, const std::string& path, const std::string& k) {
     const std::string cam = world::asString(o["camera"], path, k + ".camera");
     if (!rig || !poses)
@@ -26,22 +26,22 @@ void poseFromRig(PosedImage& im, const detail::json& o, const CameraRig* rig,
     mrpt::math::TPose2D p;
     if (!io::interpolatePose(*poses, im.timestamp_s, p))
         world::failAt(path, k + ".timestamp", "time " + std::to_string(im.timestamp_s) + " s is outside the poses' range");
-    const RigCamera& rc = rig->cameras[static_cast<std::size_t>(c)];
+    const detector_io::RigCamera& rc = rig->cameras[static_cast<std::size_t>(c)];
     im.camera = camera::PinholeCamera::onRobot(mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)), rc.robotTCamera(), rc.intrinsics);
 }
 
 }  // namespace
 
-std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRig* rig,
+std::vector<PosedImage> readCameraFrames(const std::string& path, const detector_io::CameraRig* rig,
                                          const std::vector<io::StampedPose2D>* poses) {
-    const detail::json j = world::readJsonFile(path);
-    const detail::json& ims = world::requireKey(j, "images", path, "images");
+    const nlohmann::json j = world::readJsonFile(path);
+    const nlohmann::json& ims = world::requireKey(j, "images", path, "images");
     if (!ims.is_array()) world::failAt(path, "images", "expected a list of images");
     std::vector<PosedImage> out;
     std::set<std::int64_t> ids;
     for (std::size_t i = 0; i < ims.size(); ++i) {
         const std::string k = "images[" + std::to_string(i) + "]";
-        const detail::json& o = ims[i];
+        const nlohmann::json& o = ims[i];
         PosedImage im;
         im.id = world::asInteger(world::requireKey(o, "id", path, k + ".id"), path, k + ".id");
         if (!ids.insert(im.id).second) world::failAt(path, k + ".id", "duplicate image id " + std::to_string(im.id));
@@ -60,22 +60,22 @@ std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRi
             world::failAt(path, k + ".width/height",
                           std::to_string(w) + " x " + std::to_string(h) + " px exceeds the maximum side " +
                               std::to_string(obs::limits::kMaxImageSide_px) + " px");
-        const Eigen::Matrix3d K = detail::matrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
+        const Eigen::Matrix3d K = world::asMatrix3(world::requireKey(o, "K", path, k + ".K"), path, k + ".K");
         if (!(K(0, 0) > 0) || !(K(1, 1) > 0) || K(1, 0) != 0 || K(2, 0) != 0 || K(2, 1) != 0 || K(2, 2) != 1)
             world::failAt(path, k + ".K", "expected [[fx, s, cx], [0, fy, cy], [0, 0, 1]] with fx, fy > 0");
         im.camera.setIntrinsics(K, static_cast<int>(w), static_cast<int>(h));
-        const auto p = detail::numbers(world::requireKey(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
+        const auto p = world::asNumberArray(world::requireKey(o, "position_m", path, k + ".position_m"), 3, path, k + ".position_m");
         for (double x : p)
             if (!(std::abs(x) <= obs::limits::kMaxCoordinate_m))
                 world::failAt(path, k + ".position_m", "coordinate beyond " + std::to_string(obs::limits::kMaxCoordinate_m) + " m");
         Eigen::Matrix3d R;
         if (o.contains("quaternion_wxyz")) {
-            const auto q = detail::numbers(o["quaternion_wxyz"], 4, path, k + ".quaternion_wxyz");
+            const auto q = world::asNumberArray(o["quaternion_wxyz"], 4, path, k + ".quaternion_wxyz");
             const Eigen::Quaterniond quat(q[0], q[1], q[2], q[3]);
             if (std::abs(quat.norm() - 1.0) > 1e-6) world::failAt(path, k + ".quaternion_wxyz", "not a unit quaternion");
             R = quat.normalized().toRotationMatrix();
         } else {
-            R = detail::matrix3(world::requireKey(o, "rotation", path, k + ".rotation"), path, k + ".rotation");
+            R = world::asMatrix3(world::requireKey(o, "rotation", path, k + ".rotation"), path, k + ".rotation");
             if ((R.transpose() * R - Eigen::Matrix3d::Identity()).norm() > 1e-6 || R.determinant() < 0)
                 world::failAt(path, k + ".rotation", "not a rotation matrix (R^T R = I, det R = +1, tol 1e-6)");
         }
@@ -95,9 +95,9 @@ void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& i
         o["timestamp"] = im.timestamp_s;
         o["width"] = im.camera.widthPx();
         o["height"] = im.camera.heightPx();
-        o["K"] = detail::toJson(im.camera.K());
-        o["position_m"] = detail::toJson(Eigen::Vector3d(im.camera.world_T_camera.translation()));
-        o["rotation"] = detail::toJson(Eigen::Matrix3d(im.camera.world_T_camera.linear()));
+        o["K"] = world::toJson(im.camera.K());
+        o["position_m"] = world::toJson(Eigen::Vector3d(im.camera.world_T_camera.translation()));
+        o["rotation"] = world::toJson(Eigen::Matrix3d(im.camera.world_T_camera.linear()));
         ims.push_back(o);
     }
     world::writeJsonFile(nlohmann::ordered_json{{"images", ims}}, path, world::JsonLayout::Indent1);

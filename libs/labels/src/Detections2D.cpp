@@ -1,5 +1,5 @@
 /// \file Detections2D.cpp
-#include "JsonUtil.h"
+#include <simp/world/JsonRead.h>
 
 #include <simp/io/NameValueList.h>
 #include <simp/io/StrictNumber.h>
@@ -55,8 +55,8 @@ std::vector<Detection2D> readCsv(const std::string& path, const std::vector<std:
 }
 
 std::vector<Detection2D> readJson(const std::string& path, const std::vector<std::string>& names) {
-    const detail::json j = world::readJsonFile(path);
-    const detail::json& dets = world::requireKey(j, "detections", path, "detections");
+    const nlohmann::json j = world::readJsonFile(path);
+    const nlohmann::json& dets = world::requireKey(j, "detections", path, "detections");
     if (!dets.is_array()) world::failAt(path, "detections", "expected a list");
     std::vector<Detection2D> out;
     for (std::size_t i = 0; i < dets.size(); ++i) {
@@ -64,7 +64,7 @@ std::vector<Detection2D> readJson(const std::string& path, const std::vector<std
         Detection2D d;
         d.image_id = world::asInteger(world::requireKey(dets[i], "image_id", path, k + ".image_id"), path, k + ".image_id");
         d.class_name = world::asString(world::requireKey(dets[i], "class", path, k + ".class"), path, k + ".class");
-        const auto b = detail::numbers(world::requireKey(dets[i], "bbox", path, k + ".bbox"), 4, path, k + ".bbox");
+        const auto b = world::asNumberArray(world::requireKey(dets[i], "bbox", path, k + ".bbox"), 4, path, k + ".bbox");
         d.x_min = b[0], d.y_min = b[1], d.x_max = b[2], d.y_max = b[3];
         if (dets[i].contains("score")) d.score = world::asNumber(dets[i]["score"], path, k + ".score");
         check(d, names, path, k);

@@ -55,8 +55,8 @@ int LabelsApp::run(std::ostream& out) {
     else
         w.objects = world::loadObjectMap(world_path);
     std::vector<io::StampedPose2D> poses;
-    CameraRig rig;
-    if (!poses_path.empty()) poses = io::readTum(poses_path), rig = loadCameraRig(rig_path);
+    detector_io::CameraRig rig;
+    if (!poses_path.empty()) poses = io::readTum(poses_path), rig = detector_io::loadCameraRig(rig_path);
     const auto images = readCameraFrames(frames_path, poses_path.empty() ? nullptr : &rig,
                                          poses_path.empty() ? nullptr : &poses);
     const auto dets = readDetections2D(detections_path, w.objects.class_names);

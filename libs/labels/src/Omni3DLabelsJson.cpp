@@ -1,9 +1,9 @@
 /// \file Omni3DLabelsJson.cpp
 /// writeOmni3DLabels(): the Omni3D dataset JSON (github.com/facebookresearch/omni3d, DATA.md).
-#include "JsonUtil.h"
+#include <simp/world/JsonRead.h>
 
 #include <simp/labels/LabelGenerator.h>
-#include <simp/labels/Omni3DBox.h>
+#include <simp/detector_io/Omni3DBox.h>
 
 namespace simp::labels {
 
@@ -21,7 +21,7 @@ void writeOmni3DLabels(const std::string& path, const LabelSet& labels, const st
     oj ims = oj::array();
     for (const PosedImage& im : labels.images)
         ims.push_back({{"id", im.id}, {"dataset_id", 0}, {"file_path", im.file_path}, {"width", im.camera.widthPx()},
-                       {"height", im.camera.heightPx()}, {"K", detail::toJson(im.camera.K())}, {"src_90_rotate", 0}, {"src_flagged", false},
+                       {"height", im.camera.heightPx()}, {"K", world::toJson(im.camera.K())}, {"src_90_rotate", 0}, {"src_flagged", false},
                        {"timestamp", im.timestamp_s}});
     j["images"] = ims;
     oj cats = oj::array();
@@ -42,11 +42,11 @@ void writeOmni3DLabels(const std::string& path, const LabelSet& labels, const st
         o["bbox2D_proj"] = boxJson(a.projection.bbox_proj);
         o["bbox2D_trunc"] = boxJson(a.projection.bbox_trunc);
         oj corners = oj::array();
-        for (const Eigen::Vector3d& c : omni3DCorners(a.box_cam)) corners.push_back(detail::toJson(c));
+        for (const Eigen::Vector3d& c : detector_io::omni3DCorners(a.box_cam)) corners.push_back(world::toJson(c));
         o["bbox3D_cam"] = corners;
-        o["center_cam"] = detail::toJson(a.box_cam.center);
-        o["dimensions"] = detail::toJson(omni3DDimensions(a.box_cam));
-        o["R_cam"] = detail::toJson(a.box_cam.R);
+        o["center_cam"] = world::toJson(a.box_cam.center);
+        o["dimensions"] = world::toJson(detector_io::omni3DDimensions(a.box_cam));
+        o["R_cam"] = world::toJson(a.box_cam.R);
         o["behind_camera"] = a.box_cam.center.z() <= 0;
         o["truncation"] = a.projection.truncation;
         o["visibility"] = a.visibility;

@@ -14,7 +14,7 @@
 
 #include <simp/camera/PinholeCamera.h>
 #include <simp/io/Tum.h>
-#include <simp/labels/CameraRig.h>
+#include <simp/detector_io/CameraRig.h>
 
 #include <cstdint>
 #include <string>
@@ -33,7 +33,7 @@ struct PosedImage {
 ///        width/height <= 0, rotation not orthonormal, duplicate id).
 ///        An image with "camera" needs `rig` and `poses` (else: error naming the key), a camera of the
 ///        rig and a timestamp inside the poses' range.
-std::vector<PosedImage> readCameraFrames(const std::string& path, const CameraRig* rig = nullptr,
+std::vector<PosedImage> readCameraFrames(const std::string& path, const detector_io::CameraRig* rig = nullptr,
                                          const std::vector<io::StampedPose2D>* poses = nullptr);
 /// Writes the same format (rotation as a 3x3 matrix, full precision).
 void writeCameraFrames(const std::string& path, const std::vector<PosedImage>& images);

@@ -2,9 +2,10 @@
 /// \file JsonRead.h
 /// Reading and writing the project's JSON files with error messages that name the file,
 /// the entry and the key ("objects.json: objects[3].size_m: expected 3 positive numbers").
-/// Shared by libs/world (world directories, the authors' map format) and libs/labels
-/// (detector files, camera frames, Omni3D labels).
+/// Shared by libs/world (world directories, the authors' map format), libs/detector_io (detector
+/// files, camera rigs) and libs/labels (camera frames, Omni3D labels).
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -40,5 +41,13 @@ std::string asString(const nlohmann::json& v, const std::string& file, const std
 /// An array of exactly n finite numbers (n = 0: any length); `expect` completes the message.
 std::vector<double> asNumbers(const nlohmann::json& v, std::size_t n, const std::string& file,
                               const std::string& key_path, const std::string& expect);
+/// An array of exactly n finite numbers; a wrong element is named ("<key_path>[i]").
+std::vector<double> asNumberArray(const nlohmann::json& v, std::size_t n, const std::string& file,
+                                  const std::string& key_path);
+/// A 3x3 matrix as [[r0], [r1], [r2]] or 9 numbers, row-major.
+Eigen::Matrix3d asMatrix3(const nlohmann::json& v, const std::string& file, const std::string& key_path);
+/// Eigen values as JSON: a matrix as an array of rows, a vector as an array.
+nlohmann::ordered_json toJson(const Eigen::Matrix3d& M);
+nlohmann::ordered_json toJson(const Eigen::Vector3d& v);
 
 }  // namespace simp::world

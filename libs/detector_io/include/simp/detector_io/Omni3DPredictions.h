@@ -8,11 +8,11 @@
 ///                     "bbox2D" [x0, y0, x1, y1] | "bbox" [x, y, w, h] (optional), "detector_id" (optional)}]}
 /// A top-level array is read as the "predictions" list (Omni3D's results file).
 
-#include <simp/labels/DetectionSet.h>
+#include <simp/detector_io/DetectionSet.h>
 
 #include <string>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 /// \throw std::runtime_error naming the file and the key (e.g. "predictions[3].R_cam") on a missing
 ///        file, invalid JSON, missing key, non-number, unknown class, unknown image id, bad box.
@@ -21,4 +21,4 @@ DetectionSet readOmni3DPredictions(const std::string& path);
 /// category_id, full double precision).
 void writeOmni3DPredictions(const std::string& path, const DetectionSet& set);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

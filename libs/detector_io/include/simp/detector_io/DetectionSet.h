@@ -4,14 +4,14 @@
 /// detections, and the conversion to / from rawlog frames (doc/detector-io.md).
 
 #include <simp/io/Tum.h>
-#include <simp/labels/CameraRig.h>
+#include <simp/detector_io/CameraRig.h>
 #include <simp/obs/RawlogReader.h>
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 /// One camera image and the detector's output on it (boxes in the camera optical frame).
 struct DetectionImage {
@@ -40,4 +40,4 @@ std::vector<obs::RawlogFrame> framesFromDetections(const DetectionSet& set, cons
 /// name (union of the observations' class lists, in order of first appearance).
 DetectionSet detectionsFromFrames(const std::vector<obs::RawlogFrame>& frames);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

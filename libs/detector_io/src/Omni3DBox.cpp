@@ -1,11 +1,11 @@
 /// \file Omni3DBox.cpp
-#include <simp/labels/Omni3DBox.h>
+#include <simp/detector_io/Omni3DBox.h>
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <stdexcept>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 geometry::Box3D boxFromOmni3D(const Eigen::Vector3d& center_cam, const Eigen::Vector3d& d, const Eigen::Matrix3d& R) {
     geometry::Box3D b;
@@ -50,4 +50,4 @@ geometry::Box3D boxFromOmni3DCorners(const std::array<Eigen::Vector3d, 8>& v) {
     return b;
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -14,7 +14,7 @@
 
 #include <array>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 /// Box3D corner index of Omni3D vertex v_i.
 constexpr std::array<int, 8> kOmni3DCornerToBox3D = {0, 1, 3, 2, 4, 5, 7, 6};
@@ -35,4 +35,4 @@ std::array<Eigen::Vector3d, 8> omni3DCorners(const geometry::Box3D& box);
 /// \throw std::invalid_argument when the corners are degenerate (zero extent, mirrored).
 geometry::Box3D boxFromOmni3DCorners(const std::array<Eigen::Vector3d, 8>& corners);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

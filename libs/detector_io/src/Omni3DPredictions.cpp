@@ -1,17 +1,17 @@
 /// \file Omni3DPredictions.cpp
-#include "JsonUtil.h"
+#include <simp/world/JsonRead.h>
 
-#include <simp/labels/Omni3DBox.h>
-#include <simp/labels/Omni3DPredictions.h>
+#include <simp/detector_io/Omni3DBox.h>
+#include <simp/detector_io/Omni3DPredictions.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <map>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 namespace {
 
-using detail::json;
+using nlohmann::json;
 
 std::uint16_t classOf(const json& p, const std::vector<std::string>& names, const std::string& file,
                       const std::string& key) {
@@ -34,17 +34,17 @@ obs::Detection3D detectionOf(const json& p, const std::vector<std::string>& name
     obs::Detection3D d;
     d.class_id = classOf(p, names, file, key);
     d.confidence = static_cast<float>(world::asNumber(world::requireKey(p, "score", file, key + ".score"), file, key + ".score"));
-    const auto c = detail::numbers(world::requireKey(p, "center_cam", file, key + ".center_cam"), 3, file, key + ".center_cam");
-    const auto s = detail::numbers(world::requireKey(p, "dimensions", file, key + ".dimensions"), 3, file, key + ".dimensions");
+    const auto c = world::asNumberArray(world::requireKey(p, "center_cam", file, key + ".center_cam"), 3, file, key + ".center_cam");
+    const auto s = world::asNumberArray(world::requireKey(p, "dimensions", file, key + ".dimensions"), 3, file, key + ".dimensions");
     const std::string rkey = p.contains("R_cam") ? "R_cam" : "pose";
-    const Eigen::Matrix3d R = detail::matrix3(world::requireKey(p, rkey, file, key + ".R_cam"), file, key + "." + rkey);
+    const Eigen::Matrix3d R = world::asMatrix3(world::requireKey(p, rkey, file, key + ".R_cam"), file, key + "." + rkey);
     d.box_in_camera = boxFromOmni3D({c[0], c[1], c[2]}, {s[0], s[1], s[2]}, R);
     if (p.contains("bbox2D")) {
-        const auto b = detail::numbers(p["bbox2D"], 4, file, key + ".bbox2D");
+        const auto b = world::asNumberArray(p["bbox2D"], 4, file, key + ".bbox2D");
         d.box_2d = obs::ImageBox2D{static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]),
                                    static_cast<float>(b[3])};
     } else if (p.contains("bbox")) {  // Omni3D results: x, y, w, h
-        const auto b = detail::numbers(p["bbox"], 4, file, key + ".bbox");
+        const auto b = world::asNumberArray(p["bbox"], 4, file, key + ".bbox");
         d.box_2d = obs::ImageBox2D{static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[0] + b[2]),
                                    static_cast<float>(b[1] + b[3])};
     }
@@ -140,9 +140,9 @@ void writeOmni3DPredictions(const std::string& path, const DetectionSet& set) {
             p["category"] = set.class_names.at(d.class_id);
             p["category_id"] = d.class_id;
             p["score"] = d.confidence;
-            p["center_cam"] = detail::toJson(d.box_in_camera.center);
-            p["dimensions"] = detail::toJson(omni3DDimensions(d.box_in_camera));
-            p["R_cam"] = detail::toJson(d.box_in_camera.R);
+            p["center_cam"] = world::toJson(d.box_in_camera.center);
+            p["dimensions"] = world::toJson(omni3DDimensions(d.box_in_camera));
+            p["R_cam"] = world::toJson(d.box_in_camera.R);
             if (d.box_2d) p["bbox2D"] = {d.box_2d->x_min, d.box_2d->y_min, d.box_2d->x_max, d.box_2d->y_max};
             if (d.detector_id) p["detector_id"] = *d.detector_id;
             preds.push_back(p);
@@ -153,4 +153,4 @@ void writeOmni3DPredictions(const std::string& path, const DetectionSet& set) {
     world::writeJsonFile(j, path, world::JsonLayout::Indent1);
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 /// Writes `frames` to `path` (uncompressed; creates parent folders).
 /// \throw std::runtime_error naming the file when it cannot write.
@@ -21,4 +21,4 @@ void writeDetectionRawlog(const std::string& path, const std::vector<obs::Rawlog
 /// time (frames without an increment keep the previous pose).
 std::vector<io::StampedPose2D> integrateOdometry(const std::vector<obs::RawlogFrame>& frames);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 struct RigCamera {
     std::string name;                    ///< sensor label of its observations
@@ -36,4 +36,4 @@ struct CameraRig {
 ///        non-number, width/height/focal <= 0, duplicate camera names, no camera).
 CameraRig loadCameraRig(const std::string& path);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

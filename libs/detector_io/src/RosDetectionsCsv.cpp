@@ -1,7 +1,7 @@
 /// \file RosDetectionsCsv.cpp
-#include <simp/labels/Omni3DBox.h>
+#include <simp/detector_io/Omni3DBox.h>
 #include <simp/io/StrictNumber.h>
-#include <simp/labels/RosDetectionsCsv.h>
+#include <simp/detector_io/RosDetectionsCsv.h>
 
 #include <algorithm>
 
@@ -13,7 +13,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 namespace {
 
@@ -121,4 +121,4 @@ void writeRosDetectionsCsv(const std::string& path, const DetectionSet& set) {
     if (!out) throw std::runtime_error(path + ": write failed");
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -1,6 +1,6 @@
 /// \file DetectionSet.cpp
 #include <mrpt/poses/CPose2D.h>
-#include <simp/labels/DetectionSet.h>
+#include <simp/detector_io/DetectionSet.h>
 #include <simp/obs/ObjectClasses.h>
 
 #include <algorithm>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 std::vector<obs::RawlogFrame> framesFromDetections(const DetectionSet& set, const std::vector<io::StampedPose2D>& poses,
                                                    const CameraRig& rig, const std::string& source) {
@@ -89,4 +89,4 @@ DetectionSet detectionsFromFrames(const std::vector<obs::RawlogFrame>& frames) {
     return set;
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -1,11 +1,11 @@
 /// \file CameraRig.cpp
-#include "JsonUtil.h"
+#include <simp/world/JsonRead.h>
 
 #include <simp/io/StrictIni.h>
 #include <simp/io/StrictNumber.h>
 #include <mrpt/system/string_utils.h>
 #include <simp/obs/InputLimits.h>
-#include <simp/labels/CameraRig.h>
+#include <simp/detector_io/CameraRig.h>
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <functional>
 #include <set>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 mrpt::poses::CPose3D RigCamera::robotTCamera() const {
     return obs::cameraPoseOnRobot(x_m, y_m, z_m, yaw_rad, pitch_down_rad);
@@ -80,8 +80,8 @@ CameraRig loadIni(const std::string& path) {
 }
 
 CameraRig loadJson(const std::string& path) {
-    const detail::json j = world::readJsonFile(path);
-    const detail::json& cams = world::requireKey(j, "cameras", path, "cameras");
+    const nlohmann::json j = world::readJsonFile(path);
+    const nlohmann::json& cams = world::requireKey(j, "cameras", path, "cameras");
     if (!cams.is_array()) world::failAt(path, "cameras", "expected a list of cameras");
     CameraRig rig;
     for (std::size_t i = 0; i < cams.size(); ++i) {
@@ -112,4 +112,4 @@ CameraRig loadCameraRig(const std::string& path) {
     return rig;
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

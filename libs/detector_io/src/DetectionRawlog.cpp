@@ -5,12 +5,12 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
-#include <simp/labels/DetectionRawlog.h>
+#include <simp/detector_io/DetectionRawlog.h>
 
 #include <filesystem>
 #include <stdexcept>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 void writeDetectionRawlog(const std::string& path, const std::vector<obs::RawlogFrame>& frames) {
     const std::filesystem::path p(path);
@@ -44,4 +44,4 @@ std::vector<io::StampedPose2D> integrateOdometry(const std::vector<obs::RawlogFr
     return out;
 }
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io

@@ -6,11 +6,11 @@
 /// rig camera name or its index in the rig (0-based); class = class id (index into the class list).
 /// Empty lines and lines starting with '#' are skipped; so is a first line starting with "timestamp".
 
-#include <simp/labels/DetectionSet.h>
+#include <simp/detector_io/DetectionSet.h>
 
 #include <string>
 
-namespace simp::labels {
+namespace simp::detector_io {
 
 /// Reads the CSV; `class_names` is the label set the class ids index; a numeric camera is
 /// resolved to the rig's camera name. Each box is fitted to its corners (boxFromOmni3DCorners()).
@@ -21,4 +21,4 @@ DetectionSet readRosDetectionsCsv(const std::string& path, const std::vector<std
 /// Writes one row per image (camera as its name, full double precision, with a '#' header line).
 void writeRosDetectionsCsv(const std::string& path, const DetectionSet& set);
 
-}  // namespace simp::labels
+}  // namespace simp::detector_io
