@@ -33,20 +33,23 @@ def read_libraries():
     return libs
 
 
+def reachable(libs, start, skip_direct=None):
+    """The libraries `start` uses directly or through others (not through its direct use of `skip_direct`)."""
+    seen, todo = set(), [d for d in libs[start]["deps"] if d != skip_direct]
+    while todo:
+        n = todo.pop()
+        if n not in seen:
+            seen.add(n)
+            todo += libs[n]["deps"]
+    return seen
+
+
 def check_includes(libs):
     """Every `#include <simp/X/...>` of a library's files names itself or a library its DEPS reach:
     the picture drawn from the DEPS is then also the picture of the includes."""
-    def reach(start):
-        seen, todo = {start}, list(libs[start]["deps"])
-        while todo:
-            n = todo.pop()
-            if n not in seen:
-                seen.add(n)
-                todo += libs[n]["deps"]
-        return seen
     wrong = []
     for name in sorted(libs):
-        allowed = reach(name)
+        allowed = reachable(libs, name) | {name}
         for f in sorted((ROOT / "libs" / name).rglob("*")):
             if f.suffix in (".h", ".cpp"):
                 for used in sorted(set(re.findall(r"#include\s*<simp/(\w+)/", f.read_text()))):
@@ -70,15 +73,7 @@ def floors_of(libs):
 
 
 def reduced_edges(libs):
-    def reach(start, skip_direct_to):
-        seen, todo = set(), [d for d in libs[start]["deps"] if d != skip_direct_to]
-        while todo:
-            n = todo.pop()
-            if n not in seen:
-                seen.add(n)
-                todo += libs[n]["deps"]
-        return seen
-    return [(a, b) for a in sorted(libs) for b in libs[a]["deps"] if b not in reach(a, b)]
+    return [(a, b) for a in sorted(libs) for b in libs[a]["deps"] if b not in reachable(libs, a, b)]
 
 
 def layout(libs, floor, edges):
