@@ -168,3 +168,33 @@ TEST(Plots, TrajectoryMapShowsGroundTruthWhenGivenEstimateParticlesAndALegend) {
     layers.ground_truth.clear();  // no ground truth: neither drawn nor in the legend
     EXPECT_EQ(countColor(drawTrajectoryMap(layers), gt), 0);
 }
+
+TEST(Plots, ChangeMapShowsTheObjectsTheSessionNeverSawApart) {
+    auto w = smallWorld();
+    w.objects.objects[0].id = 1;  // table: checked this session, unchanged
+    w.objects.objects[1].id = 2;  // chair: never in view
+    WorldBounds bounds;  // the figure's own canvas, to find the objects' pixels
+    for (const auto& o : w.objects.objects) bounds.add(o.box);
+    const Canvas canvas = makeCanvasFor(&w.floorplan, bounds);
+    const cv::Point table = canvas.toPixel(3.0, 2.0), chair = canvas.toPixel(7.0, 3.0);
+    const auto purpleness = [](const cv::Vec3b& bgr) { return int(bgr[0]) - int(bgr[1]); };  // blue over green
+
+    const cv::Mat3b plain = drawChangeMap(w.floorplan, w.objects, {});
+    const cv::Mat3b marked = drawChangeMap(w.floorplan, w.objects, {}, {2});
+    ASSERT_EQ(plain.size(), marked.size());
+    // Unchanged objects are filled grey (blue = green); the one never in view is filled purple.
+    EXPECT_LE(std::abs(purpleness(plain(chair))), 2);
+    EXPECT_GE(purpleness(marked(chair)), 15);
+    EXPECT_EQ(marked(table), plain(table));
+    // An object the report changes is drawn as the change, even when listed as never in view.
+    simp::world::ChangeRecord removed;
+    removed.kind = "removed";
+    removed.id_before = 2;
+    removed.class_name = "chair";
+    removed.before = w.objects.objects[1].box;
+    auto after = w.objects;
+    after.objects.pop_back();
+    EXPECT_EQ(cv::norm(drawChangeMap(w.floorplan, after, {removed}, {2}), drawChangeMap(w.floorplan, after, {removed}),
+                      cv::NORM_INF),
+              0.0);
+}

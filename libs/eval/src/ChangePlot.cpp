@@ -14,12 +14,12 @@
 namespace simp::eval {
 
 cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world::ObjectMapData& map,
-                        const std::vector<world::ChangeRecord>& changes) {
+                        const std::vector<world::ChangeRecord>& changes, const std::set<std::int64_t>& unseen_ids) {
     // Kind colours far from each other; unchanged objects in grey, not in their class colour
     // (the class palette has reds and greens too).
     namespace fc = obs::figure_colors;
     const cv::Scalar kRemoved = toBgr(fc::kWrong), kMoved = toBgr(fc::kMoved), kAdded = toBgr(fc::kGroundTruth),
-                     kUnchanged = toBgr(fc::kUnchanged);
+                     kUnchanged = toBgr(fc::kUnchanged), kUnseen = toBgr(fc::kUnseen);
     WorldBounds bounds;
     for (const auto& o : map.objects) bounds.add(o.box);
     for (const auto& ch : changes) {
@@ -32,12 +32,13 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     std::set<std::int64_t> changed_ids;
     for (const auto& ch : changes)
         if (ch.id_after) changed_ids.insert(*ch.id_after);
-    int n_unchanged = 0;
-    for (const auto& o : map.objects)
-        if (!changed_ids.count(o.id)) {
-            drawPolygon(c, geometry::footprint(o.box), kUnchanged, 1, 0.15);
-            ++n_unchanged;
-        }
+    int n_unchanged = 0, n_unseen = 0;
+    for (const auto& o : map.objects) {
+        if (changed_ids.count(o.id)) continue;
+        const bool unseen = unseen_ids.count(o.id) > 0;
+        drawPolygon(c, geometry::footprint(o.box), unseen ? kUnseen : kUnchanged, 1, unseen ? 0.25 : 0.15);
+        ++(unseen ? n_unseen : n_unchanged);
+    }
     int n_removed = 0, n_moved = 0, n_added = 0;
     for (const auto& ch : changes) {
         if (ch.kind == "removed" && ch.before) {
@@ -65,7 +66,8 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     std::vector<LegendItem> legend{{"removed (" + std::to_string(n_removed) + ")", kRemoved},
                                                            {"moved (" + std::to_string(n_moved) + ")", kMoved},
                                                            {"added (" + std::to_string(n_added) + ")", kAdded},
-                                                           {"unchanged (" + std::to_string(n_unchanged) + ")", kUnchanged}};
+                                                           {"unchanged (" + std::to_string(n_unchanged) + ")", kUnchanged},
+                                                           {"not in view (" + std::to_string(n_unseen) + ")", kUnseen}};
     drawLegend(c, legend);
     return c.image;
 }

@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 namespace simp::mapping {
@@ -192,8 +193,11 @@ void MapApp::run() {
         const fs::path dir(m_args.out_dir);
         world::saveChangesFile(m_update.changes, (dir / "changes.json").string());
         saveUpdateEvidence(m_update.evidence, (dir / "update_evidence.tsv").string());
+        std::set<std::int64_t> unseen_ids;
+        for (const auto& e : m_update.evidence)
+            if (e.origin == "earlier" && e.decision == "unseen") unseen_ids.insert(e.id);
         eval::writePng((dir / "changes.png").string(),
-                       eval::drawChangeMap(result.floorplan, result.objects, m_update.changes));
+                       eval::drawChangeMap(result.floorplan, result.objects, m_update.changes, unseen_ids));
         std::map<std::string, int> per_kind;
         for (const auto& c : m_update.changes) ++per_kind[c.kind];
         out << "simp-map: changes against '" << m_args.update_dir << "': " << per_kind["removed"] << " removed, "

@@ -10,6 +10,8 @@
 #include <simp/world/World.h>
 
 #include <opencv2/core.hpp>
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,8 +46,10 @@ cv::Mat3b drawMapEvaluation(const world::World& ground_truth, const world::World
 
 /// A change report over the floor plan (simp-map --update's M/changes.png): the updated map's
 /// unchanged objects thin in grey, removed objects red and crossed out, moved objects orange (old
-/// place outlined, new place filled, an arrow between), added objects green and filled; counts in the legend.
+/// place outlined, new place filled, an arrow between), added objects green and filled; the objects of
+/// `unseen_ids` (kept because the session never had them in view: the report says nothing of them)
+/// purple instead of grey; counts in the legend.
 cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& floorplan, const world::ObjectMapData& map,
-                        const std::vector<world::ChangeRecord>& changes);
+                        const std::vector<world::ChangeRecord>& changes, const std::set<std::int64_t>& unseen_ids = {});
 
 }  // namespace simp::eval
