@@ -205,6 +205,8 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .number("room_door_width_m", &O::room_door_width_m, "m", between(0, 100), "segmentation erosion (see \"Rooms\")")
             .number("room_min_area_m2", &O::room_min_area_m2, "m^2", between(0, 1e6), "segmentation: smaller eroded components are not rooms")
             .number("room_search_radius_m", &O::room_search_radius_m, "m", between(0, 100), "room of a point in a wall")
+            .number("room_behind_wall_margin_m", &O::room_behind_wall_margin_m, "m", between(0, 100),
+                    "a detection of another room behind a wall, this close to the robot's room, refines objects, never starts one; 0 = paper")
             .choice("room_update_policy", &O::room_policy,
                     std::vector<std::pair<std::string, RoomUpdatePolicy>>{{"current_room", RoomUpdatePolicy::CurrentRoom},
                                                                           {"all", RoomUpdatePolicy::All}},

@@ -146,6 +146,21 @@ int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
     return best;
 }
 
+bool ObjectMapBuilder::roomWithin(int room, double x_m, double y_m, double radius_m) const {
+    if (m_rooms.empty() || radius_m <= 0) return false;
+    const double res = m_rooms.resolution_m;
+    const int col = static_cast<int>(std::floor((x_m - m_rooms.origin_x_m) / res));
+    const int row = m_rooms.ids.rows - 1 - static_cast<int>(std::floor((y_m - m_rooms.origin_y_m) / res));
+    const int rad = static_cast<int>(std::ceil(radius_m / res));
+    for (int dr = -rad; dr <= rad; ++dr)
+        for (int dc = -rad; dc <= rad; ++dc) {
+            const int r = row + dr, c = col + dc;
+            if (dr * dr + dc * dc > rad * rad || r < 0 || c < 0 || r >= m_rooms.ids.rows || c >= m_rooms.ids.cols) continue;
+            if (m_rooms.ids(r, c) == room) return true;
+        }
+    return false;
+}
+
 int ObjectMapBuilder::mapClassOf(const std::string& name) {
     const int id = m_g.classId(name);
     if (id >= 0) return id;
@@ -263,7 +278,17 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
         }
         if (current_room != 0) {
             const int r = roomOf(o.box.center.x(), o.box.center.y());
-            if (r != 0 && r != current_room) { reject(m_stats.rejected_room); continue; }
+            if (r != 0 && r != current_room) {
+                const Eigen::Vector2d cam = camera.world_T_camera.translation().head<2>();
+                const Eigen::Vector2d to = o.box.center.head<2>() - cam;
+                const bool behind_wall = !m_walls.empty() && m_walls.castRay(cam, to, to.norm()) < to.norm();
+                if (!behind_wall ||
+                    !roomWithin(current_room, o.box.center.x(), o.box.center.y(), m_options.room_behind_wall_margin_m)) {
+                    reject(m_stats.rejected_room);
+                    continue;
+                }
+                o.may_start = false;
+            }
         }
         o.class_id = mapClassOf(name);
         (weak ? m_window_weak : dets).push_back(o);
@@ -295,6 +320,7 @@ void ObjectMapBuilder::insertIntoLocalMap(const std::vector<LocalObject>& dets) 
         LocalObject& l = m_local[assignment[r]];
         l.box = mergeBoxes(l.box, l.n_match, dets[r].box, dets[r].n_match);
         l.n_match += dets[r].n_match;
+        l.may_start = l.may_start || dets[r].may_start;
     }
 }
 

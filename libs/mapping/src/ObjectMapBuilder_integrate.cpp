@@ -130,6 +130,7 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
         const LocalObject& drop = &keep == &m_local[bi] ? m_local[bj] : m_local[bi];
         keep.box = mergeBoxes(keep.box, keep.n_match, drop.box, drop.n_match);
         keep.n_match += drop.n_match;
+        keep.may_start = keep.may_start || drop.may_start;
         m_local.erase(m_local.begin() + static_cast<std::ptrdiff_t>(&drop == &m_local[bi] ? bi : bj));
     }
 }
@@ -308,7 +309,7 @@ void ObjectMapBuilder::flush() {
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             matched.insert(o.id);
             ++m_stats.merged;
-        } else {
+        } else if (l.may_start) {
             world::MapObject o;
             o.id = m_next_id++;
             o.class_id = l.class_id;

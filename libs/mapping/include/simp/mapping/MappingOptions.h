@@ -221,6 +221,11 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     double room_door_width_m = 1.5;      ///< erosion removes openings up to this width (m)
     double room_min_area_m2 = 1.0;       ///< eroded components smaller than this are not rooms (m^2)
     double room_search_radius_m = 0.5;   ///< a point in a wall / furniture cell takes the nearest room within this (m)
+    /// A detection whose centre lies in another room but behind a wall as the camera looks, within
+    /// this of the robot's room (m), is kept to refine an object it associates with, never to start
+    /// one (0 = the paper: rejected). The camera cannot see through walls: it is the depth error of an
+    /// object on this side; rejecting it cuts the noise at the wall and biases the estimate away from it.
+    double room_behind_wall_margin_m = 0.25;
     /// @}
 
     /// Defaults: the values above, per-class filters of the authors' mapping_args.json.

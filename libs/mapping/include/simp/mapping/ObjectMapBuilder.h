@@ -57,6 +57,9 @@ struct LocalObject {
     int class_id = 0;     ///< index into the map's class_names
     geometry::Box3D box;  ///< world frame, canonical upright
     int n_match = 1;      ///< detections aggregated
+    /// False while it holds only detections behind a wall (MappingOptions::room_behind_wall_margin_m):
+    /// it may refine a map object, never become one.
+    bool may_start = true;
 };
 
 class ObjectMapBuilder {
@@ -104,6 +107,8 @@ class ObjectMapBuilder {
     /// Room id at a world point: the room map's, else the nearest non-zero id within
     /// room_search_radius_m; 0 when there is no room map or none is near.
     int roomOf(double x_m, double y_m) const;
+    /// True when a pixel of room `room` lies within `radius_m` of the world point.
+    bool roomWithin(int room, double x_m, double y_m, double radius_m) const;
 
     /// Whether the floor-plan prior applies: wall_align on, or auto and the floor plan draws no
     /// furniture (camera::FloorPlanGrid::enclosedUnknownArea_m2() <= wall_align_max_enclosed_unknown_m2).
