@@ -149,15 +149,10 @@ int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
 bool ObjectMapBuilder::roomWithin(int room, double x_m, double y_m, double radius_m) const {
     if (m_rooms.empty() || radius_m <= 0) return false;
     const double res = m_rooms.resolution_m;
-    const int col = static_cast<int>(std::floor((x_m - m_rooms.origin_x_m) / res));
-    const int row = m_rooms.ids.rows - 1 - static_cast<int>(std::floor((y_m - m_rooms.origin_y_m) / res));
     const int rad = static_cast<int>(std::ceil(radius_m / res));
     for (int dr = -rad; dr <= rad; ++dr)
-        for (int dc = -rad; dc <= rad; ++dc) {
-            const int r = row + dr, c = col + dc;
-            if (dr * dr + dc * dc > rad * rad || r < 0 || c < 0 || r >= m_rooms.ids.rows || c >= m_rooms.ids.cols) continue;
-            if (m_rooms.ids(r, c) == room) return true;
-        }
+        for (int dc = -rad; dc <= rad; ++dc)
+            if (dr * dr + dc * dc <= rad * rad && m_rooms.roomAt(x_m + dc * res, y_m + dr * res) == room) return true;
     return false;
 }
 
