@@ -105,6 +105,14 @@ inline std::vector<obs::CObservationObjects3D> observe(const std::vector<TrueObj
 }
 
 /// Options for tests: every class enabled with range [0, 6] m and confidence >= 0.5.
+/// An empty map of these classes, without noise models.
+inline world::ObjectMapData emptyMapOf(const std::vector<std::string>& classes) {
+    world::ObjectMapData m;
+    m.class_names = classes;
+    m.class_noise.resize(classes.size());
+    return m;
+}
+
 inline MappingOptions testOptions() {
     MappingOptions o;
     o.per_class.clear();

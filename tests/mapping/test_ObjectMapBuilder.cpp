@@ -13,12 +13,7 @@ namespace {
 
 const std::vector<std::string> kClasses = {"table", "cabinet", "chair"};
 
-simp::world::ObjectMapData emptyMap() {
-    simp::world::ObjectMapData m;
-    m.class_names = kClasses;
-    m.class_noise.resize(kClasses.size());
-    return m;
-}
+simp::world::ObjectMapData emptyMap() { return test::emptyMapOf(kClasses); }
 
 void insertAll(ObjectMapBuilder& b, const std::vector<simp::obs::CObservationObjects3D>& obs,
                const mrpt::poses::CPose3D& pose) {

@@ -12,13 +12,6 @@ namespace {
 
 const std::vector<std::string> kWallClasses = {"table", "cabinet", "chair"};
 
-simp::world::ObjectMapData emptyWallMap() {
-    simp::world::ObjectMapData m;
-    m.class_names = kWallClasses;
-    m.class_noise.resize(kWallClasses.size());
-    return m;
-}
-
 /// Rooms x < 5 and x > 5 (a wall of two 5 cm cells at x = 5, a door at y in [2.6, 3.4]).
 const mrpt::maps::COccupancyGridMap2D& twoRooms() {
     static const auto grid = test::makeFloorPlan(10, 6, 5.0, 2.6, 3.4);
@@ -32,7 +25,7 @@ ObjectMapBuilder builderWithMargin(double margin_m) {
     opts.hide_objects_in_walls = false;    // nor left out for lying in the wall
     ObjectMapBuilder b(opts);
     b.setFloorPlan(twoRooms(), {});
-    b.setMap(emptyWallMap());
+    b.setMap(test::emptyMapOf(kWallClasses));
     return b;
 }
 
