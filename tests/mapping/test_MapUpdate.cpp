@@ -5,7 +5,9 @@
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
 #include <simp/mapping/DisplacedCopies.h>
+#include <simp/mapping/AssociationCost.h>
 #include <simp/mapping/MapUpdate.h>
+#include <simp/mapping/SessionTurn.h>
 #include <simp/world/World.h>
 
 #include <algorithm>
@@ -202,6 +204,55 @@ TEST(MapUpdate, AMoveWhoseNewPlaceHidesTheOldPlaceIsReportedAsMoved) {
     ASSERT_TRUE(f_now);
     EXPECT_EQ(f_now->id, f->id);
     EXPECT_LT((f_now->box.center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+}
+
+// Table C turned by 15 deg and shifted 0.1 m: its detections still associate with the old table.
+const test::TrueObject kTableCTurned{0, makeUprightBox({4.1, 5.0, 0.375}, {1.2, 0.8, 0.75}, 15.0 * M_PI / 180.0)};
+
+TEST(MapUpdate, AnObjectTurnedWhereItStoodIsReportedAsMoved) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan);
+    const auto* c = nearest(m0, kTableC);
+    ASSERT_TRUE(c);
+    const std::vector<test::TrueObject> now = {kTableA, kCabinetB, kTableCTurned};
+
+    ObjectMapBuilder b(test::testOptions());
+    b.setMap(m0, true);
+    b.setFloorPlan(plan, {});
+    session(b, now, 1, 2);
+    // Still matched where it was: no displacement evidence, only its heading.
+    const SessionEvidence e = b.evidenceOf(c->id);
+    EXPECT_GE(e.windows_matched, 10);
+    EXPECT_GT(e.windows_matched, 3 * e.windows_missed);
+    const TurnEstimate t = estimateTurn(c->box, b.sessionBoxesOf(c->id));
+    // Heading noise 0.03 rad per detection: the turn to a degree or two.
+    EXPECT_NEAR(t.turn_rad * 180.0 / M_PI, 15.0, 2.0);
+
+    const MapUpdateResult r = detectChanges(m0, b);
+    ASSERT_EQ(r.changes.size(), 1u);
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "moved");
+    EXPECT_EQ(ch.id_before, c->id);
+    EXPECT_EQ(ch.id_after, c->id);
+    ASSERT_TRUE(ch.after.has_value());
+    // The updated map holds the session's box: the new heading and place, not the earlier ones
+    // pulled a little (the merge with hundreds of earlier detections).
+    const auto* c_now = nearest(r.map, kTableCTurned);
+    ASSERT_TRUE(c_now);
+    EXPECT_EQ(c_now->id, c->id);
+    EXPECT_LT((c_now->box.center - kTableCTurned.box.center).head<2>().norm(), 0.1);
+    const double dyaw = simp::geometry::yawOf(closestEquivalent(c_now->box, kTableCTurned.box.R)) -
+                        simp::geometry::yawOf(kTableCTurned.box);
+    EXPECT_LT(std::abs(dyaw), 3.0 * M_PI / 180.0);
+
+    // The same session with the rule off: the turned table is not reported at all.
+    auto off = test::testOptions();
+    off.update_turn_min_deg = 0;
+    ObjectMapBuilder b_off(off);
+    b_off.setMap(m0, true);
+    b_off.setFloorPlan(plan, {});
+    session(b_off, now, 1, 2);
+    EXPECT_TRUE(detectChanges(m0, b_off).changes.empty());
 }
 
 TEST(MapUpdate, DisplacedCopyCandidatesAreNewObjectsOfTheClassNearby) {

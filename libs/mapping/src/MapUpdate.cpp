@@ -1,6 +1,7 @@
 /// \file MapUpdate.cpp
 /// Change detection of a map update (MapUpdate.h).
 #include <simp/mapping/MapUpdate.h>
+#include <simp/mapping/SessionTurn.h>
 
 #include <algorithm>
 #include <cmath>
@@ -243,6 +244,29 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         c.id_after = n.id;
         c.after = n.box;
         c.confidence = conf;
+        moved.push_back(c);
+    }
+    // Turned: still matched where it was, at another heading (SessionTurn.h).
+    for (const auto& o : m0.objects) {
+        UpdateEvidence& row = r.evidence[row_of.at(o.id)];
+        const TurnEstimate t = estimateTurn(o.box, builder.sessionBoxesOf(o.id));
+        row.turn_deg = t.turn_rad * 180.0 / M_PI, row.turn_std_error_deg = t.std_error_rad * 180.0 / M_PI;
+        const auto it = index_in_map.find(o.id);
+        if (row.decision != "kept" || it == index_in_map.end() || drop[it->second] ||
+            !isTurned(t, opt.update_turn_min_windows, opt.update_turn_min_deg * M_PI / 180.0, opt.update_turn_sigmas))
+            continue;
+        const auto after = builder.sessionBoxOf(o.id);
+        if (!after) continue;
+        world::MapObject& n = r.map.objects[it->second];
+        n.box = *after;
+        row.decision = "turned";
+        world::ChangeRecord c;
+        c.kind = "moved";
+        c.id_before = c.id_after = o.id;
+        c.class_name = m0.class_names.at(static_cast<std::size_t>(o.class_id));
+        c.before = o.box;
+        c.after = n.box;
+        c.confidence = addedConfidence(builder.evidenceOf(o.id));  // w / (w + 1) of its matched windows
         moved.push_back(c);
     }
     for (std::size_t f = 0; f < fresh.size(); ++f) {

@@ -202,6 +202,11 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
                     "a new object this close to an object of M0 of its class that the session matched (or within that object's length) ...")
             .number("update_twin_max_window_ratio", &O::update_twin_max_window_ratio, "", between(0, 1e6),
                     "... and matched in fewer than this times its windows is its twin: neither added nor a move's new place; 0 = off")
+            .number("update_turn_min_deg", &O::update_turn_min_deg, "deg", between(0, 45),
+                    "an object of M0 whose heading this session differs from its box's by this much ...; 0 = off")
+            .integer("update_turn_min_windows", &O::update_turn_min_windows, "windows", between(1, 1e6), "... over at least this many matched windows ...")
+            .number("update_turn_sigmas", &O::update_turn_sigmas, "", between(0, 100),
+                    "... and by this many standard errors of the session's mean heading was turned: moved, its box the session's")
             .number("room_door_width_m", &O::room_door_width_m, "m", between(0, 100), "segmentation erosion (see \"Rooms\")")
             .number("room_min_area_m2", &O::room_min_area_m2, "m^2", between(0, 1e6), "segmentation: smaller eroded components are not rooms")
             .number("room_search_radius_m", &O::room_search_radius_m, "m", between(0, 100), "room of a point in a wall")

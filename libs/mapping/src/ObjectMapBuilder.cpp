@@ -55,6 +55,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_windows_matched.clear();
     m_windows_missed.clear();
     m_windows_missed_behind_new.clear();
+    m_session_boxes.clear();
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_weak.clear();
@@ -75,6 +76,25 @@ SessionEvidence ObjectMapBuilder::evidenceOf(std::int64_t id) const {
     if (const auto it = m_windows_missed_behind_new.find(id); it != m_windows_missed_behind_new.end())
         e.windows_missed_behind_new = it->second;
     return e;
+}
+
+const std::vector<SessionBox>& ObjectMapBuilder::sessionBoxesOf(std::int64_t id) const {
+    static const std::vector<SessionBox> kNone;
+    const auto it = m_session_boxes.find(id);
+    return it == m_session_boxes.end() ? kNone : it->second;
+}
+
+std::optional<geometry::Box3D> ObjectMapBuilder::sessionBoxOf(std::int64_t id) const {
+    const auto& windows = sessionBoxesOf(id);
+    const auto o = std::find_if(m_g.objects.begin(), m_g.objects.end(), [id](const auto& m) { return m.id == id; });
+    if (windows.empty() || o == m_g.objects.end()) return std::nullopt;
+    geometry::Box3D mean = windows.front().box;
+    double weight = windows.front().weight;
+    for (std::size_t k = 1; k < windows.size(); ++k) {
+        mean = mergeBoxes(mean, weight, windows[k].box, windows[k].weight);
+        weight += windows[k].weight;
+    }
+    return shownBox(o->class_id, mean);
 }
 
 world::ObjectMapData ObjectMapBuilder::confirmedMap() const {

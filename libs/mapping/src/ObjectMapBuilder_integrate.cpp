@@ -179,6 +179,11 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
+        if (const auto it = m_session_boxes.find(d.id); it != m_session_boxes.end() && isGivenObject(k.id)) {
+            const std::vector<SessionBox> windows = it->second;  // operator[] below may rehash
+            auto& into = m_session_boxes[k.id];
+            into.insert(into.end(), windows.begin(), windows.end());
+        }
         m_windows_missed[k.id] += m_windows_missed[d.id];
         m_windows_missed_behind_new[k.id] += m_windows_missed_behind_new[d.id];
         forget(d.id);
@@ -237,6 +242,7 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
     m_windows_missed_behind_new.erase(id);
+    m_session_boxes.erase(id);
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -304,6 +310,7 @@ void ObjectMapBuilder::flush() {
         if (c >= 0 && cost(r, c) < m_options.tau_cost) {
             // Merge: weighted centre, dimensions and SVD-projected rotation; n_match summed.
             world::MapObject& o = m_g.objects[cands[c]];
+            if (m_earlier_session && isGivenObject(o.id)) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
             setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());

@@ -205,6 +205,14 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// an addition: a real object next to it is seen from about as many viewpoints. 0 = off.
     double update_twin_max_distance_m = 1.0;
     double update_twin_max_window_ratio = 0.5;
+    /// An object of the earlier map matched in at least update_turn_min_windows windows whose heading
+    /// this session (circular mean over those windows, SessionTurn.h) differs from its earlier box's
+    /// by at least update_turn_min_deg and by update_turn_sigmas standard errors of that mean was
+    /// turned, so moved: reported moved, its box the session's. A move whose detections still
+    /// associate with the old object is found so. 0 = off.
+    double update_turn_min_deg = 10;
+    int update_turn_min_windows = 5;
+    double update_turn_sigmas = 3;
     /// @}
 
     /// @name Detection filter

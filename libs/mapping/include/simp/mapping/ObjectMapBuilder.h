@@ -7,6 +7,7 @@
 
 #include <mrpt/poses/CPose3D.h>
 #include <simp/mapping/MappingOptions.h>
+#include <simp/mapping/SessionTurn.h>
 #include <simp/camera/FloorPlanGrid.h>
 #include <simp/camera/ZBufferVisibility.h>
 #include <simp/model/ObjectDistribution.h>
@@ -99,6 +100,13 @@ class ObjectMapBuilder {
     bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
     /// This session's evidence about a map object (zero when none).
     SessionEvidence evidenceOf(std::int64_t id) const;
+    /// Updating an earlier map (setMap(map, true)): the boxes of the windows that matched one of its
+    /// objects this session (means of detections, with the class bias), for the turn test
+    /// (SessionTurn.h); empty for other objects.
+    const std::vector<SessionBox>& sessionBoxesOf(std::int64_t id) const;
+    /// The map box of those windows (their weighted merge, minus the class bias, aligned to the
+    /// walls): the object where this session alone saw it. nullopt without windows.
+    std::optional<geometry::Box3D> sessionBoxOf(std::int64_t id) const;
     const world::RoomMap& rooms() const { return m_rooms; }
     const BuilderStats& stats() const { return m_stats; }
     TOptions& options() { return m_options; }
@@ -183,6 +191,7 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
     std::unordered_map<std::int64_t, int> m_windows_missed_behind_new;  ///< SessionEvidence::windows_missed_behind_new
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
+    std::unordered_map<std::int64_t, std::vector<SessionBox>> m_session_boxes;  ///< sessionBoxesOf()
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
