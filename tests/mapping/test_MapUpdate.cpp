@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include "common/ErrorOf.h"
@@ -86,13 +87,36 @@ const simp::world::MapObject* nearest(const simp::world::ObjectMapData& m, const
     return best;
 }
 
+/// A builder updating m0 with one lap of `now` (seed 2): far fewer misses than the objects' earlier
+/// matches. `rare_class` / `rare_keep` as in session().
+std::unique_ptr<ObjectMapBuilder> updating(const simp::world::ObjectMapData& m0, const mrpt::maps::COccupancyGridMap2D& plan,
+                                           const std::vector<test::TrueObject>& now,
+                                           const MappingOptions& options = test::testOptions(), int rare_class = -1,
+                                           double rare_keep = 1.0) {
+    auto b = std::make_unique<ObjectMapBuilder>(options);
+    b->setMap(m0, true);
+    b->setFloorPlan(plan, {});
+    session(*b, now, 1, 2, rare_class, rare_keep);
+    return b;
+}
+
 MapUpdateResult update(const simp::world::ObjectMapData& m0, const mrpt::maps::COccupancyGridMap2D& plan,
                        const std::vector<test::TrueObject>& now) {
-    ObjectMapBuilder b(test::testOptions());
-    b.setMap(m0, true);
-    b.setFloorPlan(plan, {});
-    session(b, now, 1, 2);  // one lap: far fewer misses than the objects' earlier matches
-    return detectChanges(m0, b);
+    return detectChanges(m0, *updating(m0, plan, now));
+}
+
+/// The one change of `r`, which must be the move of object `id` under its id; nullptr otherwise.
+const simp::world::ChangeRecord* theOneMoveOf(const MapUpdateResult& r, std::int64_t id) {
+    if (r.changes.size() != 1u) {
+        ADD_FAILURE() << r.changes.size() << " changes, one move expected";
+        return nullptr;
+    }
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "moved");
+    EXPECT_EQ(ch.id_before, id);
+    EXPECT_EQ(ch.id_after, id);  // keeps its identity
+    if (!ch.after) ADD_FAILURE() << "a move without its new box";
+    return ch.after ? &ch : nullptr;
 }
 
 }  // namespace
@@ -152,13 +176,9 @@ TEST(MapUpdate, AMoveAlongAWallIsReportedAsMoved) {
     ASSERT_TRUE(e);
 
     const MapUpdateResult r = update(m0, plan, {kTableA, kCabinetB, kTableC, kCabinetEMoved});
-    ASSERT_EQ(r.changes.size(), 1u);
-    const auto& ch = r.changes[0];
-    EXPECT_EQ(ch.kind, "moved");
-    EXPECT_EQ(ch.id_before, e->id);
-    EXPECT_EQ(ch.id_after, e->id);
-    ASSERT_TRUE(ch.after.has_value());
-    EXPECT_LT((ch.after->center - kCabinetEMoved.box.center).head<2>().norm(), 0.1);
+    const auto* ch = theOneMoveOf(r, e->id);
+    ASSERT_TRUE(ch);
+    EXPECT_LT((ch->after->center - kCabinetEMoved.box.center).head<2>().norm(), 0.1);
     // The updated map: four objects, E at its new place under its id, nothing left at the old one.
     ASSERT_EQ(r.map.objects.size(), 4u);
     const auto* e_now = nearest(r.map, kCabinetEMoved);
@@ -181,23 +201,16 @@ TEST(MapUpdate, AMoveWhoseNewPlaceHidesTheOldPlaceIsReportedAsMoved) {
     const auto* f = nearest(m0, kCabinetF);
     ASSERT_TRUE(f);
 
-    ObjectMapBuilder b(test::testOptions());
-    b.setMap(m0, true);
-    b.setFloorPlan(plan, {});
-    session(b, {kTableA, kCabinetB, kTableC, kCabinetFMoved}, 1, 2);
-    const SessionEvidence e = b.evidenceOf(f->id);
+    const auto b = updating(m0, plan, {kTableA, kCabinetB, kTableC, kCabinetFMoved});
+    const SessionEvidence e = b->evidenceOf(f->id);
     // The old place was expected only behind its possible new place, and missed there.
     EXPECT_EQ(e.windows_matched, 0);
     EXPECT_GE(e.windows_missed_behind_new, 3);
     EXPECT_LT(e.windows_missed, 3);  // the new box in front: hardly ever expected otherwise
-    const MapUpdateResult r = detectChanges(m0, b);
-    ASSERT_EQ(r.changes.size(), 1u);
-    const auto& ch = r.changes[0];
-    EXPECT_EQ(ch.kind, "moved");
-    EXPECT_EQ(ch.id_before, f->id);
-    EXPECT_EQ(ch.id_after, f->id);
-    ASSERT_TRUE(ch.after.has_value());
-    EXPECT_LT((ch.after->center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
+    const MapUpdateResult r = detectChanges(m0, *b);
+    const auto* ch = theOneMoveOf(r, f->id);
+    ASSERT_TRUE(ch);
+    EXPECT_LT((ch->after->center - kCabinetFMoved.box.center).head<2>().norm(), 0.1);
     // The updated map: F at its new place under its id, nothing left at the old one.
     ASSERT_EQ(r.map.objects.size(), 4u);
     const auto* f_now = nearest(r.map, kCabinetF);
@@ -216,25 +229,17 @@ TEST(MapUpdate, AnObjectTurnedWhereItStoodIsReportedAsMoved) {
     ASSERT_TRUE(c);
     const std::vector<test::TrueObject> now = {kTableA, kCabinetB, kTableCTurned};
 
-    ObjectMapBuilder b(test::testOptions());
-    b.setMap(m0, true);
-    b.setFloorPlan(plan, {});
-    session(b, now, 1, 2);
+    const auto b = updating(m0, plan, now);
     // Still matched where it was: no displacement evidence, only its heading.
-    const SessionEvidence e = b.evidenceOf(c->id);
+    const SessionEvidence e = b->evidenceOf(c->id);
     EXPECT_GE(e.windows_matched, 10);
     EXPECT_GT(e.windows_matched, 3 * e.windows_missed);
-    const TurnEstimate t = estimateTurn(c->box, b.sessionBoxesOf(c->id));
+    const TurnEstimate t = estimateTurn(c->box, b->sessionBoxesOf(c->id));
     // Heading noise 0.03 rad per detection: the turn to a degree or two.
     EXPECT_NEAR(t.turn_rad * 180.0 / M_PI, 15.0, 2.0);
 
-    const MapUpdateResult r = detectChanges(m0, b);
-    ASSERT_EQ(r.changes.size(), 1u);
-    const auto& ch = r.changes[0];
-    EXPECT_EQ(ch.kind, "moved");
-    EXPECT_EQ(ch.id_before, c->id);
-    EXPECT_EQ(ch.id_after, c->id);
-    ASSERT_TRUE(ch.after.has_value());
+    const MapUpdateResult r = detectChanges(m0, *b);
+    ASSERT_TRUE(theOneMoveOf(r, c->id));
     // The updated map holds the session's box: the new heading and place, not the earlier ones
     // pulled a little (the merge with hundreds of earlier detections).
     const auto* c_now = nearest(r.map, kTableCTurned);
@@ -248,11 +253,7 @@ TEST(MapUpdate, AnObjectTurnedWhereItStoodIsReportedAsMoved) {
     // The same session with the rule off: the turned table is not reported at all.
     auto off = test::testOptions();
     off.update_turn_min_deg = 0;
-    ObjectMapBuilder b_off(off);
-    b_off.setMap(m0, true);
-    b_off.setFloorPlan(plan, {});
-    session(b_off, now, 1, 2);
-    EXPECT_TRUE(detectChanges(m0, b_off).changes.empty());
+    EXPECT_TRUE(detectChanges(m0, *updating(m0, plan, now, off)).changes.empty());
 }
 
 TEST(MapUpdate, DisplacedCopyCandidatesAreNewObjectsOfTheClassNearby) {
@@ -292,14 +293,11 @@ TEST(MapUpdate, AClassDetectedInFewWindowsIsNotRemoved) {
     // session makes so few matches likely for a present cabinet, so it stays.
     const auto plan = test::makeFloorPlan(8, 6);
     const auto m0 = earlierMap(plan);
-    ObjectMapBuilder b(test::testOptions());
-    b.setMap(m0, true);
-    b.setFloorPlan(plan, {});
-    session(b, {kTableA, kCabinetB, kTableC}, 1, 2, kCabinetB.class_id, 0.07);
-    const SessionEvidence e = b.evidenceOf(nearest(m0, kCabinetB)->id);
+    const auto b = updating(m0, plan, {kTableA, kCabinetB, kTableC}, test::testOptions(), kCabinetB.class_id, 0.07);
+    const SessionEvidence e = b->evidenceOf(nearest(m0, kCabinetB)->id);
     EXPECT_GE(e.windows_missed, 3);
     EXPECT_LT(e.windows_matched, 0.2 * (e.windows_matched + e.windows_missed));  // the fraction rule alone: gone
-    const MapUpdateResult r = detectChanges(m0, b);
+    const MapUpdateResult r = detectChanges(m0, *b);
     EXPECT_TRUE(r.changes.empty());
     EXPECT_EQ(r.map.objects.size(), 3u);
 }
