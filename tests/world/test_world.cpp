@@ -61,6 +61,25 @@ TEST(RoomMap, LookupUsesTheFloorPlanGeometry) {
     EXPECT_EQ(RoomMap{}.roomAt(10.25, -3.25), 0);
 }
 
+TEST(RoomMap, PixelOfAPointAlsoOutsideTheRaster) {
+    const RoomMap r = smallRooms();
+    int row = -9, col = -9;
+    ASSERT_TRUE(r.pixelOf(11.25, -3.75, row, col));  // bottom row, third column
+    EXPECT_EQ(row, 1);
+    EXPECT_EQ(col, 2);
+    EXPECT_EQ(r.roomAtPixel(row, col), r.roomAt(11.25, -3.75));
+    // Just left of the raster: column -1, which a search around the point steps from into column 0.
+    ASSERT_TRUE(r.pixelOf(9.9, -3.25, row, col));
+    EXPECT_EQ(row, 0);
+    EXPECT_EQ(col, -1);
+    EXPECT_EQ(r.roomAtPixel(row, col), 0);
+    EXPECT_EQ(r.roomAtPixel(row, col + 1), 1);
+    // Far away stays outside (no integer overflow); not finite: no pixel.
+    ASSERT_TRUE(r.pixelOf(1e300, -1e300, row, col));
+    EXPECT_EQ(r.roomAtPixel(row, col), 0);
+    EXPECT_FALSE(r.pixelOf(std::nan(""), -3.25, row, col));
+}
+
 TEST(RoomMap, SixteenBitRoundTripAndEightBitInput) {
     const std::string dir = freshDir();
     RoomMap r = smallRooms();

@@ -144,35 +144,29 @@ bool ObjectMapBuilder::isTwinBySupport(const world::MapObject& ref, const model:
 }
 
 int ObjectMapBuilder::roomOf(double x_m, double y_m) const {
-    if (m_rooms.empty()) return 0;
-    const double res = m_rooms.resolution_m;
-    const int col = static_cast<int>(std::floor((x_m - m_rooms.origin_x_m) / res));
-    const int row = m_rooms.ids.rows - 1 - static_cast<int>(std::floor((y_m - m_rooms.origin_y_m) / res));
-    auto at = [&](int r, int c) -> int {
-        if (r < 0 || c < 0 || r >= m_rooms.ids.rows || c >= m_rooms.ids.cols) return 0;
-        return m_rooms.ids(r, c);
-    };
-    if (const int id = at(row, col)) return id;
+    int row = 0, col = 0;
+    if (m_rooms.empty() || !m_rooms.pixelOf(x_m, y_m, row, col)) return 0;
+    if (const int id = m_rooms.roomAtPixel(row, col)) return id;
     // Nearest labelled pixel within the search radius (objects stand against walls; the GT
     // floor plans mark furniture footprints as occupied).
-    const int rad = static_cast<int>(std::ceil(m_options.room_search_radius_m / res));
+    const int rad = static_cast<int>(std::ceil(m_options.room_search_radius_m / m_rooms.resolution_m));
     int best = 0, best_d2 = rad * rad + 1;
     for (int dr = -rad; dr <= rad; ++dr)
         for (int dc = -rad; dc <= rad; ++dc) {
             const int d2 = dr * dr + dc * dc;
             if (d2 >= best_d2) continue;
-            if (const int id = at(row + dr, col + dc)) best = id, best_d2 = d2;
+            if (const int id = m_rooms.roomAtPixel(row + dr, col + dc)) best = id, best_d2 = d2;
         }
     return best;
 }
 
 bool ObjectMapBuilder::roomWithin(int room, double x_m, double y_m, double radius_m) const {
-    if (m_rooms.empty() || radius_m <= 0) return false;
-    const double res = m_rooms.resolution_m;
-    const int rad = static_cast<int>(std::ceil(radius_m / res));
+    int row = 0, col = 0;
+    if (m_rooms.empty() || radius_m <= 0 || !m_rooms.pixelOf(x_m, y_m, row, col)) return false;
+    const int rad = static_cast<int>(std::ceil(radius_m / m_rooms.resolution_m));
     for (int dr = -rad; dr <= rad; ++dr)
         for (int dc = -rad; dc <= rad; ++dc)
-            if (dr * dr + dc * dc <= rad * rad && m_rooms.roomAt(x_m + dc * res, y_m + dr * res) == room) return true;
+            if (dr * dr + dc * dc <= rad * rad && m_rooms.roomAtPixel(row + dr, col + dc) == room) return true;
     return false;
 }
 

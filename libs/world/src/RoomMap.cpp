@@ -5,6 +5,7 @@
 #include <simp/world/ImageLimits.h>
 #include <simp/world/World.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -13,13 +14,25 @@
 namespace simp::world {
 
 int RoomMap::roomAt(double x_m, double y_m) const {
-    if (ids.empty() || !std::isfinite(x_m) || !std::isfinite(y_m)) return 0;
-    // Same cell geometry as the floor plan: column c covers [ox + c res, ox + (c+1) res).
-    const double fc = std::floor((x_m - origin_x_m) / resolution_m);
-    const double fr_from_bottom = std::floor((y_m - origin_y_m) / resolution_m);
-    if (fc < 0 || fr_from_bottom < 0 || fc >= ids.cols || fr_from_bottom >= ids.rows) return 0;
-    const int row = ids.rows - 1 - static_cast<int>(fr_from_bottom);
-    return ids(row, static_cast<int>(fc));
+    int row = 0, col = 0;
+    return pixelOf(x_m, y_m, row, col) ? roomAtPixel(row, col) : 0;
+}
+
+bool RoomMap::pixelOf(double x_m, double y_m, int& row, int& col) const {
+    if (!std::isfinite(x_m) || !std::isfinite(y_m)) return false;
+    // Same cell geometry as the floor plan: column c covers [ox + c res, ox + (c+1) res). Far
+    // points are clamped before the integer cast; they stay outside the raster.
+    constexpr double kFar = 1 << 30;
+    const double fc = std::clamp(std::floor((x_m - origin_x_m) / resolution_m), -kFar, kFar);
+    const double fr_from_bottom = std::clamp(std::floor((y_m - origin_y_m) / resolution_m), -kFar, kFar);
+    col = static_cast<int>(fc);
+    row = ids.rows - 1 - static_cast<int>(fr_from_bottom);
+    return true;
+}
+
+int RoomMap::roomAtPixel(int row, int col) const {
+    if (row < 0 || col < 0 || row >= ids.rows || col >= ids.cols) return 0;
+    return ids(row, col);
 }
 
 int roomOfBox(const RoomMap& rooms, const geometry::Box3D& box) {

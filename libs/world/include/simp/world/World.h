@@ -23,6 +23,11 @@ struct RoomMap {
     bool empty() const { return ids.empty(); }
     /// Room id at a world point (0 outside).
     int roomAt(double x_m, double y_m) const;
+    /// The pixel (row, col) whose cell holds a world point, possibly outside the raster (so that a
+    /// search around a point just outside still finds the pixels near it); false when not finite.
+    bool pixelOf(double x_m, double y_m, int& row, int& col) const;
+    /// Room id of pixel (row, col); 0 outside the raster.
+    int roomAtPixel(int row, int col) const;
 };
 
 /// Room of a map object: the room at its centre; when the centre lies on no room (a board or
