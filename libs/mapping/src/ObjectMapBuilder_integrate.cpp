@@ -179,10 +179,9 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
-        if (const auto it = m_session_boxes.find(d.id); it != m_session_boxes.end() && isGivenObject(k.id)) {
-            const std::vector<SessionBox> windows = it->second;  // operator[] below may rehash
+        if (auto windows = m_session_boxes.extract(d.id); windows && isGivenObject(k.id)) {
             auto& into = m_session_boxes[k.id];
-            into.insert(into.end(), windows.begin(), windows.end());
+            into.insert(into.end(), windows.mapped().begin(), windows.mapped().end());
         }
         m_windows_missed[k.id] += m_windows_missed[d.id];
         m_windows_missed_behind_new[k.id] += m_windows_missed_behind_new[d.id];
