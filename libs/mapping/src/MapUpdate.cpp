@@ -1,11 +1,13 @@
 /// \file MapUpdate.cpp
 /// Change detection of a map update (MapUpdate.h).
+#include <simp/geometry/Box3DIoU.h>
 #include <simp/mapping/MapUpdate.h>
 #include <simp/mapping/SessionTurn.h>
 
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace simp::mapping {
 namespace {
@@ -21,6 +23,26 @@ double addedConfidence(const SessionEvidence& e) {
 
 double planarDistance(const geometry::Box3D& a, const geometry::Box3D& b) {
     return (a.center - b.center).head<2>().norm();
+}
+
+/// Fraction of the smaller box's volume that the two boxes share, in [0, 1].
+double sharedFraction(const geometry::Box3D& a, const geometry::Box3D& b) {
+    const double smaller = std::min(a.size.prod(), b.size.prod());
+    return smaller > 0 ? geometry::intersectionVolume(a, b) / smaller : 0.0;
+}
+
+/// `o` has at least `min_fraction` of its volume inside the box of an object of another class of
+/// `m` and does not rise above it (drawers in a cabinet, as annotated): whether a detector sees it
+/// through that box is not known. An object whose top stands above the other box (a cabinet half
+/// in a table) is in plain view above it. Map boxes are upright.
+bool isNested(const world::MapObject& o, const world::ObjectMapData& m, double min_fraction) {
+    if (min_fraction <= 0 || !(o.box.size.prod() > 0)) return false;
+    const double top = o.box.center.z() + 0.5 * o.box.size.z();
+    for (const auto& other : m.objects)
+        if (other.id != o.id && other.class_id != o.class_id && top <= other.box.center.z() + 0.5 * other.box.size.z() &&
+            geometry::intersectionVolume(o.box, other.box) >= min_fraction * o.box.size.prod())
+            return true;
+    return false;
 }
 
 /// P(X <= k) for X ~ Binomial(n, p): how likely a present object with match rate p is matched
@@ -73,31 +95,38 @@ bool isGone(const SessionEvidence& e, double p_present, const MappingOptions& op
 /// update_twin_max_window_ratio times its windows. A twin is the detector's error from some
 /// viewpoints (along a desk, across a cabinet row); a real object next to it would be seen from
 /// about as many viewpoints as its neighbour.
+/// Also leaves out a new object that shares update_same_overlap_fraction of the smaller box's
+/// volume with an object of m0 of its class that stays (not in `gone`): two objects of a class do
+/// not interpenetrate, so it is that object seen again, whatever this session expected of it (a
+/// floor plan that draws furniture hides an earlier box that the detector still sees).
 void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
                std::vector<std::size_t>& fresh, std::vector<bool>& drop,
-               const std::unordered_map<std::int64_t, std::size_t>& row_of) {
+               const std::unordered_map<std::int64_t, std::size_t>& row_of,
+               const std::unordered_set<std::int64_t>& gone_ids) {
     const MappingOptions& opt = builder.options();
-    if (opt.update_twin_max_window_ratio <= 0) return;
     std::vector<std::size_t> kept;
     for (const std::size_t k : fresh) {
         const world::MapObject& n = r.map.objects[k];
         const int w_new = builder.evidenceOf(n.id).windows_matched;
-        bool twin = false;
+        const char* decision = nullptr;
         for (const world::MapObject& o : r.map.objects) {
             if (!builder.isGivenObject(o.id) || o.class_id != n.class_id) continue;  // one class table: r.map's
             const int w_old = builder.evidenceOf(o.id).windows_matched;
             // Along a long object (a desk, a sofa) its twins lie up to its length away.
             const double radius = std::max(opt.update_twin_max_distance_m, std::max(o.box.size.x(), o.box.size.y()));
-            if (w_old > 0 && planarDistance(o.box, n.box) < radius &&
+            if (opt.update_twin_max_window_ratio > 0 && w_old > 0 && planarDistance(o.box, n.box) < radius &&
                 w_new < opt.update_twin_max_window_ratio * w_old)
-                twin = true;
+                decision = "twin";
+            else if (!decision && opt.update_same_overlap_fraction > 0 && !gone_ids.count(o.id) &&
+                     sharedFraction(o.box, n.box) >= opt.update_same_overlap_fraction)
+                decision = "overlaps-earlier";
         }
-        if (!twin) {
+        if (!decision) {
             kept.push_back(k);
             continue;
         }
         drop[k] = true;
-        r.evidence[row_of.at(n.id)].decision = "twin";
+        r.evidence[row_of.at(n.id)].decision = decision;
     }
     fresh = std::move(kept);
 }
@@ -123,6 +152,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const world::MapObject* before;
         SessionEvidence evidence;
         bool removable = false;  // the misses alone justify a removal
+        bool nested = false;     // inside another object's box: never removed on misses (isNested)
     };
     std::vector<Gone> gone;
     const std::vector<double> rate = classMatchRates(m0, builder);
@@ -145,9 +175,11 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         r.evidence.push_back(row);
         if (!index_in_map.count(o.id)) continue;  // merged into another object of m0: still there
         if (expected == 0) ++r.unseen;
+        // Inside another object's box, its misses are no evidence of absence (isNested).
+        const bool nested = isNested(o, m0, opt.update_nested_overlap_fraction);
         const bool removable = e.windows_missed >= opt.update_min_missed_windows &&
                                e.windows_matched < opt.update_max_seen_fraction * expected &&
-                               p_present < opt.update_removal_alpha;
+                               p_present < opt.update_removal_alpha && !nested;
         // The windows that expected it only behind a new object of its class (its possible new
         // place, DisplacedCopies.h) count for a move to such an object, never for a removal.
         SessionEvidence behind = e;
@@ -155,9 +187,9 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const int expected_behind = behind.windows_matched + behind.windows_missed;
         const double p_behind = binomialCdf(e.windows_matched, expected_behind, row.class_rate);
         if (isGone(e, p_present, opt))
-            gone.push_back({&o, e, removable});
+            gone.push_back({&o, e, removable, nested});
         else if (e.windows_missed_behind_new > 0 && isGone(behind, p_behind, opt))
-            gone.push_back({&o, behind, false});
+            gone.push_back({&o, behind, false, nested});
     }
 
     // New confirmed objects of this session. The earlier map already explains the scene, so a new
@@ -186,7 +218,9 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
             r.evidence.back().decision = "too-few-windows";
         }
     }
-    dropTwins(builder, r, fresh, drop, row_of);
+    std::unordered_set<std::int64_t> gone_ids;
+    for (const Gone& g : gone) gone_ids.insert(g.before->id);
+    dropTwins(builder, r, fresh, drop, row_of, gone_ids);
     // Nearest object of the other origin and the same class, for the evidence file.
     for (UpdateEvidence& a : r.evidence)
         for (const UpdateEvidence& b : r.evidence) {
@@ -220,7 +254,10 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     std::vector<world::ChangeRecord> removed, moved, added;
     for (std::size_t g = 0; g < gone.size(); ++g) {
         const world::MapObject& b = *gone[g].before;
-        if (partner_of_gone[g] < 0 && !gone[g].removable) continue;  // no new place, too little evidence: kept
+        if (partner_of_gone[g] < 0 && !gone[g].removable) {  // no new place, too little evidence: kept
+            if (gone[g].nested) r.evidence[row_of.at(b.id)].decision = "nested";
+            continue;
+        }
         if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;
         world::ChangeRecord c;
         c.id_before = b.id;

@@ -202,6 +202,12 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
                     "a new object this close to an object of M0 of its class that the session matched (or within that object's length) ...")
             .number("update_twin_max_window_ratio", &O::update_twin_max_window_ratio, "", between(0, 1e6),
                     "... and matched in fewer than this times its windows is its twin: neither added nor a move's new place; 0 = off")
+            .number("update_same_overlap_fraction", &O::update_same_overlap_fraction, "", between(0, 1),
+                    "a new object sharing this fraction of the smaller box's volume with an object of M0 of its class that stays "
+                    "is that object seen again: neither added nor a move's new place; 0 = off")
+            .number("update_nested_overlap_fraction", &O::update_nested_overlap_fraction, "", between(0, 1),
+                    "an object of M0 with this fraction of its volume inside the box of an object of another class, its top not "
+                    "above that box, is never removed on misses alone (a new object of its class nearby still makes it moved); 0 = off")
             .number("update_turn_min_deg", &O::update_turn_min_deg, "deg", between(0, 45),
                     "an object of M0 whose heading this session differs from its box's by this much ...; 0 = off")
             .integer("update_turn_min_windows", &O::update_turn_min_windows, "windows", between(1, 1e6), "... over at least this many matched windows ...")

@@ -26,6 +26,12 @@
 ///  - twins: a new object within update_twin_max_distance_m (or the m0 object's length) of an m0
 ///    object of its class that this session matched, matched in fewer than
 ///    update_twin_max_window_ratio times its windows, is its twin: neither added nor a new place;
+///  - the same object seen again: a new object sharing update_same_overlap_fraction of the smaller
+///    box's volume with an m0 object of its class that is not gone (two objects of a class do not
+///    interpenetrate), whatever the session expected of that object: neither added nor a new place;
+///  - nested: an m0 object with update_nested_overlap_fraction of its volume inside the box of an
+///    m0 object of another class, its top not above it, is never removed on misses alone (a new
+///    place still moves it);
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few

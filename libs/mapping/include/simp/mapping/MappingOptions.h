@@ -205,6 +205,16 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// an addition: a real object next to it is seen from about as many viewpoints. 0 = off.
     double update_twin_max_distance_m = 1.0;
     double update_twin_max_window_ratio = 0.5;
+    /// A new object sharing at least this fraction of the smaller box's volume with an object of
+    /// the earlier map of its class that stays is that object seen again (two objects of a class do
+    /// not interpenetrate): neither added nor a new place. 0 = off.
+    double update_same_overlap_fraction = 0.5;
+    /// An object of the earlier map with at least this fraction of its volume inside the box of an
+    /// object of another class, its top not above that box (drawers annotated inside a cabinet;
+    /// a cabinet half in a table is in plain view above it), is never removed on misses
+    /// alone: whether a detector sees it through the other box is not known (a new object of its
+    /// class nearby still makes it moved). 0 = off.
+    double update_nested_overlap_fraction = 0.5;
     /// An object of the earlier map matched in at least update_turn_min_windows windows whose heading
     /// this session (circular mean over those windows, SessionTurn.h) differs from its earlier box's
     /// by at least update_turn_min_deg and by update_turn_sigmas standard errors of that mean was
