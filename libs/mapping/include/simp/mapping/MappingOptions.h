@@ -179,7 +179,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     int update_min_missed_windows = 3;         ///< windows; one or two misses are detector misses
     double update_max_seen_fraction = 0.2;     ///< matched / (matched + missed) below this = gone
     double update_move_max_distance_m = 1.5;   ///< m, planar centre distance old -> new of a move
-    double update_min_move_m = 0.2;            ///< m; a closer pair is the object re-estimated, no change
+    double update_min_move_m = 0.3;            ///< m; a closer pair is the object re-estimated, no change
     /// A new object of the session enters the updated map (and the report, as added or as the new
     /// place of a moved object) once matched in this many integration windows.
     int update_min_new_windows = 10;
