@@ -25,10 +25,15 @@ double planarDistance(const geometry::Box3D& a, const geometry::Box3D& b) {
     return (a.center - b.center).head<2>().norm();
 }
 
+/// The boxes' horizontal circumcircles meet (a cheap test before intersectionVolume).
+bool mayIntersect(const geometry::Box3D& a, const geometry::Box3D& b) {
+    return planarDistance(a, b) <= 0.5 * (a.size.head<2>().norm() + b.size.head<2>().norm());
+}
+
 /// Fraction of the smaller box's volume that the two boxes share, in [0, 1].
 double sharedFraction(const geometry::Box3D& a, const geometry::Box3D& b) {
     const double smaller = std::min(a.size.prod(), b.size.prod());
-    return smaller > 0 ? geometry::intersectionVolume(a, b) / smaller : 0.0;
+    return smaller > 0 && mayIntersect(a, b) ? geometry::intersectionVolume(a, b) / smaller : 0.0;
 }
 
 /// `o` has at least `min_fraction` of its volume inside the box of an object of another class of
@@ -40,7 +45,7 @@ bool isNested(const world::MapObject& o, const world::ObjectMapData& m, double m
     const double top = o.box.center.z() + 0.5 * o.box.size.z();
     for (const auto& other : m.objects)
         if (other.id != o.id && other.class_id != o.class_id && top <= other.box.center.z() + 0.5 * other.box.size.z() &&
-            geometry::intersectionVolume(o.box, other.box) >= min_fraction * o.box.size.prod())
+            mayIntersect(o.box, other.box) && geometry::intersectionVolume(o.box, other.box) >= min_fraction * o.box.size.prod())
             return true;
     return false;
 }
@@ -152,7 +157,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const world::MapObject* before;
         SessionEvidence evidence;
         bool removable = false;  // the misses alone justify a removal
-        bool nested = false;     // inside another object's box: never removed on misses (isNested)
+        bool spared_nested = false;  // removable on its misses, but inside another object's box (isNested)
     };
     std::vector<Gone> gone;
     const std::vector<double> rate = classMatchRates(m0, builder);
@@ -176,10 +181,11 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         if (!index_in_map.count(o.id)) continue;  // merged into another object of m0: still there
         if (expected == 0) ++r.unseen;
         // Inside another object's box, its misses are no evidence of absence (isNested).
-        const bool nested = isNested(o, m0, opt.update_nested_overlap_fraction);
-        const bool removable = e.windows_missed >= opt.update_min_missed_windows &&
-                               e.windows_matched < opt.update_max_seen_fraction * expected &&
-                               p_present < opt.update_removal_alpha && !nested;
+        const bool removable_on_misses = e.windows_missed >= opt.update_min_missed_windows &&
+                                         e.windows_matched < opt.update_max_seen_fraction * expected &&
+                                         p_present < opt.update_removal_alpha;
+        const bool spared_nested = removable_on_misses && isNested(o, m0, opt.update_nested_overlap_fraction);
+        const bool removable = removable_on_misses && !spared_nested;
         // The windows that expected it only behind a new object of its class (its possible new
         // place, DisplacedCopies.h) count for a move to such an object, never for a removal.
         SessionEvidence behind = e;
@@ -187,9 +193,9 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         const int expected_behind = behind.windows_matched + behind.windows_missed;
         const double p_behind = binomialCdf(e.windows_matched, expected_behind, row.class_rate);
         if (isGone(e, p_present, opt))
-            gone.push_back({&o, e, removable, nested});
+            gone.push_back({&o, e, removable, spared_nested});
         else if (e.windows_missed_behind_new > 0 && isGone(behind, p_behind, opt))
-            gone.push_back({&o, behind, false, nested});
+            gone.push_back({&o, behind, false, spared_nested});
     }
 
     // New confirmed objects of this session. The earlier map already explains the scene, so a new
@@ -255,7 +261,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     for (std::size_t g = 0; g < gone.size(); ++g) {
         const world::MapObject& b = *gone[g].before;
         if (partner_of_gone[g] < 0 && !gone[g].removable) {  // no new place, too little evidence: kept
-            if (gone[g].nested) r.evidence[row_of.at(b.id)].decision = "nested";
+            if (gone[g].spared_nested) r.evidence[row_of.at(b.id)].decision = "nested";
             continue;
         }
         if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;
