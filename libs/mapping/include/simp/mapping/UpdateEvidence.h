@@ -21,8 +21,8 @@ struct UpdateEvidence {
     int windows_missed_behind_new = 0;  ///< SessionEvidence::windows_missed_behind_new (earlier objects)
     double class_rate = 0;        ///< the class's match rate this session (earlier objects; 0 for new)
     double p_present = 1;         ///< binomial P(<= matched | expected, class_rate) (earlier objects)
-    /// earlier: kept | unseen | merged | removed | moved | re-estimated | turned;
-    /// new: added | move-target | too-few-windows | twin
+    /// earlier: kept | unseen | merged | removed | moved | re-estimated | turned | nested;
+    /// new: added | move-target | too-few-windows | twin | overlaps-earlier
     std::string decision;
     std::int64_t nearest_id = -1;  ///< nearest object of the other origin and the same class (-1: none)
     double nearest_m = -1;         ///< its planar centre distance (m; -1: none)
