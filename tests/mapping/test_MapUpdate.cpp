@@ -308,6 +308,21 @@ TEST(MapUpdate, ANewObjectInsideAnEarlierOneOfItsClassIsThatObjectSeenAgain) {
     EXPECT_EQ(r_off.changes[0].class_name, "cabinet");
 }
 
+TEST(MapUpdate, SharedVolumeToleratesAThinObjectsEstimatesAcrossItsThickness) {
+    // Two estimates of one 0.1 m board, 0.12 m apart across it: no shared volume as they are, most
+    // of it with 0.1 m per side; two touching cabinets of a row (0.98 m apart, 0.95 m wide) share
+    // little either way; a box shares all of itself.
+    const auto board = makeUprightBox({2.0, 1.0, 0.6}, {0.1, 1.4, 1.2}, 0.0);
+    const auto board_across = makeUprightBox({2.12, 1.0, 0.6}, {0.1, 1.4, 1.2}, 0.0);
+    EXPECT_DOUBLE_EQ(sharedVolumeFraction(board, board_across, 0.0), 0.0);
+    EXPECT_NEAR(sharedVolumeFraction(board, board_across, 0.1), 0.6, 1e-9);  // (0.3 - 0.12) / 0.3
+    const auto cabinet = makeUprightBox({0.0, 0.0, 0.9}, {0.55, 0.95, 1.8}, 0.0);
+    const auto neighbour = makeUprightBox({0.0, 0.98, 0.9}, {0.55, 0.95, 1.8}, 0.0);
+    EXPECT_DOUBLE_EQ(sharedVolumeFraction(cabinet, neighbour, 0.0), 0.0);
+    EXPECT_NEAR(sharedVolumeFraction(cabinet, neighbour, 0.1), (1.15 - 0.98) / 1.15, 1e-9);
+    EXPECT_NEAR(sharedVolumeFraction(cabinet, cabinet, 0.1), 1.0, 1e-9);
+}
+
 TEST(MapUpdate, AnObjectInsideAnotherObjectsBoxIsNotRemovedOnMisses) {
     // Drawers annotated inside cabinet B (89 % of their volume), poking out of it by 3 cm front and
     // back: the mapper expects them, the detector (which sees B's faces) never reports them.

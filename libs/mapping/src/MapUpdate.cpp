@@ -30,11 +30,6 @@ bool mayIntersect(const geometry::Box3D& a, const geometry::Box3D& b) {
     return planarDistance(a, b) <= 0.5 * (a.size.head<2>().norm() + b.size.head<2>().norm());
 }
 
-/// Fraction of the smaller box's volume that the two boxes share, in [0, 1].
-double sharedFraction(const geometry::Box3D& a, const geometry::Box3D& b) {
-    const double smaller = std::min(a.size.prod(), b.size.prod());
-    return smaller > 0 && mayIntersect(a, b) ? geometry::intersectionVolume(a, b) / smaller : 0.0;
-}
 
 /// `o` has at least `min_fraction` of its volume inside the box of an object of another class of
 /// `m` and does not rise above it (drawers in a cabinet, as annotated): whether a detector sees it
@@ -101,9 +96,10 @@ bool isGone(const SessionEvidence& e, double p_present, const MappingOptions& op
 /// viewpoints (along a desk, across a cabinet row); a real object next to it would be seen from
 /// about as many viewpoints as its neighbour.
 /// Also leaves out a new object that shares update_same_overlap_fraction of the smaller box's
-/// volume with an object of m0 of its class that stays (not in `gone`): two objects of a class do
-/// not interpenetrate, so it is that object seen again, whatever this session expected of it (a
-/// floor plan that draws furniture hides an earlier box that the detector still sees).
+/// volume (sides grown by update_same_overlap_margin_m) with an object of m0 of its class that
+/// stays (not in `gone`): two objects of a class do not interpenetrate, so it is that object seen
+/// again, whatever this session expected of it (a floor plan that draws furniture hides an earlier
+/// box that the detector still sees).
 void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
                std::vector<std::size_t>& fresh, std::vector<bool>& drop,
                const std::unordered_map<std::int64_t, std::size_t>& row_of,
@@ -123,7 +119,7 @@ void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
                 w_new < opt.update_twin_max_window_ratio * w_old)
                 decision = "twin";
             else if (!decision && opt.update_same_overlap_fraction > 0 && !gone_ids.count(o.id) &&
-                     sharedFraction(o.box, n.box) >= opt.update_same_overlap_fraction)
+                     sharedVolumeFraction(o.box, n.box, opt.update_same_overlap_margin_m) >= opt.update_same_overlap_fraction)
                 decision = "overlaps-earlier";
         }
         if (!decision) {
@@ -137,6 +133,13 @@ void dropTwins(const ObjectMapBuilder& builder, MapUpdateResult& r,
 }
 
 }  // namespace
+
+double sharedVolumeFraction(const geometry::Box3D& a, const geometry::Box3D& b, double margin_m) {
+    geometry::Box3D ga = a, gb = b;
+    for (geometry::Box3D* g : {&ga, &gb}) g->size.x() += 2 * margin_m, g->size.y() += 2 * margin_m;
+    const double smaller = std::min(ga.size.prod(), gb.size.prod());
+    return smaller > 0 && mayIntersect(ga, gb) ? geometry::intersectionVolume(ga, gb) / smaller : 0.0;
+}
 
 MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBuilder& builder) {
     const MappingOptions& opt = builder.options();

@@ -205,6 +205,9 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .number("update_same_overlap_fraction", &O::update_same_overlap_fraction, "", between(0, 1),
                     "a new object sharing this fraction of the smaller box's volume with an object of M0 of its class that stays "
                     "is that object seen again: neither added nor a move's new place; 0 = off")
+            .number("update_same_overlap_margin_m", &O::update_same_overlap_margin_m, "m", between(0, 10),
+                    "... both boxes' horizontal sides grown by this on each side first (a thin board's estimates differ across "
+                    "its thickness by about its thickness)")
             .number("update_nested_overlap_fraction", &O::update_nested_overlap_fraction, "", between(0, 1),
                     "an object of M0 with this fraction of its volume inside the box of an object of another class, its top not "
                     "above that box, is never removed on misses alone (a new object of its class nearby still makes it moved); 0 = off")

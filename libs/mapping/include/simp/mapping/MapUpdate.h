@@ -27,7 +27,8 @@
 ///    object of its class that this session matched, matched in fewer than
 ///    update_twin_max_window_ratio times its windows, is its twin: neither added nor a new place;
 ///  - the same object seen again: a new object sharing update_same_overlap_fraction of the smaller
-///    box's volume with an m0 object of its class that is not gone (two objects of a class do not
+///    box's volume (sharedVolumeFraction, update_same_overlap_margin_m) with an m0 object of its
+///    class that is not gone (two objects of a class do not
 ///    interpenetrate), whatever the session expected of that object: neither added nor a new place;
 ///  - nested: an m0 object with update_nested_overlap_fraction of its volume inside the box of an
 ///    m0 object of another class, its top not above it, is never removed on misses alone (a new
@@ -47,6 +48,11 @@
 #include <vector>
 
 namespace simp::mapping {
+
+/// Fraction of the smaller box's volume that boxes a and b share once both have their horizontal
+/// sides grown by margin_m on each side, in [0, 1]: two estimates of one thin object (a board)
+/// would otherwise have to agree across its thickness to centimetres.
+double sharedVolumeFraction(const geometry::Box3D& a, const geometry::Box3D& b, double margin_m);
 
 struct MapUpdateResult {
     world::ObjectMapData map;                 ///< the updated map (builder's confirmed map minus removed objects)

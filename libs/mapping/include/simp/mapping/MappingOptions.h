@@ -209,6 +209,8 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// the earlier map of its class that stays is that object seen again (two objects of a class do
     /// not interpenetrate): neither added nor a new place. 0 = off.
     double update_same_overlap_fraction = 0.5;
+    /// m; both boxes' horizontal sides are grown by this on each side before that fraction.
+    double update_same_overlap_margin_m = 0.1;
     /// An object of the earlier map with at least this fraction of its volume inside the box of an
     /// object of another class, its top not above that box (drawers annotated inside a cabinet;
     /// a cabinet half in a table is in plain view above it), is never removed on misses
