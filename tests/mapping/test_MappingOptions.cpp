@@ -77,6 +77,8 @@ TEST(MappingOptions, BadValuesNameTheKey) {
     expectThrowNaming("class_min_confidence = sink:1.5", "sink");
     expectThrowNaming("duplicate_tau_cost = 1.5", "duplicate_tau_cost");
     expectThrowNaming("duplicate_min_overlap = -0.1", "duplicate_min_overlap");
+    expectThrowNaming("distinct_codetected_frames = -1", "distinct_codetected_frames");
+    expectThrowNaming("distinct_codetected_frames = 2.5", "distinct_codetected_frames");
     expectThrowNaming("twin_max_support_ratio = 2", "twin_max_support_ratio");
     expectThrowNaming("twin_min_likelihood = -0.05", "twin_min_likelihood");
     expectThrowNaming("skip_needs_no_detection = sometimes", "skip_needs_no_detection");

@@ -131,6 +131,8 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
             .number("duplicate_center_radius_m", &O::duplicate_center_radius_m, "m", between(0, 1e3), "authors' `centerMerge`")
             .number("duplicate_min_overlap", &O::duplicate_min_overlap, "", between(0, 1),
                     "project rule: 3D intersection / smaller box volume; 0 = off")
+            .integer("distinct_codetected_frames", &O::distinct_codetected_frames, "frames", between(0, 1e6),
+                     "project rule: a same-class pair detected side by side in this many frames is never merged; 0 = off")
             .number("twin_max_support_ratio", &O::twin_max_support_ratio, "", between(0, 1),
                     "project rule: a built object with fewer than this fraction of a same-class neighbour's detections, inside its noise gate, is its twin; 0 = off")
             .number("twin_min_likelihood", &O::twin_min_likelihood, "", between(0, 1),

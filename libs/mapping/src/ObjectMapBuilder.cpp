@@ -300,6 +300,7 @@ void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt:
             }
         }
         o.class_id = mapClassOf(name);
+        o.frames = {static_cast<std::uint32_t>(m_stats.frames)};
         (weak ? m_window_weak : dets).push_back(o);
     }
     insertIntoLocalMap(dets);
@@ -330,6 +331,7 @@ void ObjectMapBuilder::insertIntoLocalMap(const std::vector<LocalObject>& dets) 
         l.box = mergeBoxes(l.box, l.n_match, dets[r].box, dets[r].n_match);
         l.n_match += dets[r].n_match;
         l.may_start = l.may_start || dets[r].may_start;
+        l.frames = unionOfFrames(l.frames, dets[r].frames);
     }
 }
 

@@ -118,7 +118,7 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
         std::size_t bi = 0, bj = 0;
         for (std::size_t i = 0; i < m_local.size(); ++i)
             for (std::size_t j = i + 1; j < m_local.size(); ++j) {
-                if (m_local[i].class_id != m_local[j].class_id) continue;
+                if (m_local[i].class_id != m_local[j].class_id || detectedApart(m_local[i].frames, m_local[j].frames)) continue;
                 const bool i_ref = m_local[i].n_match >= m_local[j].n_match;
                 const LocalObject& a = i_ref ? m_local[i] : m_local[j];
                 const LocalObject& b = i_ref ? m_local[j] : m_local[i];
@@ -131,6 +131,7 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
         keep.box = mergeBoxes(keep.box, keep.n_match, drop.box, drop.n_match);
         keep.n_match += drop.n_match;
         keep.may_start = keep.may_start || drop.may_start;
+        keep.frames = unionOfFrames(keep.frames, drop.frames);
         m_local.erase(m_local.begin() + static_cast<std::ptrdiff_t>(&drop == &m_local[bi] ? bi : bj));
     }
 }
@@ -162,6 +163,9 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
                     if (!cross_room && gi != gj && evidenceOf(m_g.objects[gi ? i : j].id).windows_matched == 0) continue;
                     if (gi != gj) r = gi ? i : j;  // the earlier object keeps its id
                 }
+                if (m_options.distinct_codetected_frames > 0 &&
+                    m_codetections.count(oi.id, oj.id) >= m_options.distinct_codetected_frames)
+                    continue;
                 const std::size_t o = r == i ? j : i;
                 const world::MapObject& ref = m_g.objects[r];
                 const world::MapObject& other = m_g.objects[o];
@@ -185,6 +189,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         }
         m_windows_missed[k.id] += m_windows_missed[d.id];
         m_windows_missed_behind_new[k.id] += m_windows_missed_behind_new[d.id];
+        m_codetections.absorb(k.id, d.id);
         forget(d.id);
         k.n_match += d.n_match;
         k.n_skip += d.n_skip;
@@ -242,6 +247,11 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_windows_missed.erase(id);
     m_windows_missed_behind_new.erase(id);
     m_session_boxes.erase(id);
+    m_codetections.forget(id);
+}
+
+bool ObjectMapBuilder::detectedApart(const FrameSerials& a, const FrameSerials& b) const {
+    return m_options.distinct_codetected_frames > 0 && sharedFrames(a, b) >= m_options.distinct_codetected_frames;
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {
@@ -303,6 +313,7 @@ void ObjectMapBuilder::flush() {
 
     std::unordered_set<std::int64_t> matched;
     std::vector<world::MapObject> added;
+    std::vector<std::int64_t> id_of_local(locals.size(), -1);  ///< the map object each local object became
     for (std::size_t r = 0; r < locals.size(); ++r) {
         const LocalObject& l = *locals[r];
         const int c = assignment[r];
@@ -314,6 +325,7 @@ void ObjectMapBuilder::flush() {
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             matched.insert(o.id);
+            id_of_local[r] = o.id;
             ++m_stats.merged;
         } else if (l.may_start) {
             world::MapObject o;
@@ -323,10 +335,15 @@ void ObjectMapBuilder::flush() {
             o.n_skip = 0;
             setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
+            id_of_local[r] = o.id;
             added.push_back(o);
             ++m_stats.added;
         }
     }
+    for (std::size_t r = 0; r < locals.size(); ++r)
+        for (std::size_t q = r + 1; q < locals.size(); ++q)
+            if (locals[r]->class_id == locals[q]->class_id && id_of_local[r] >= 0 && id_of_local[q] >= 0)
+                m_codetections.add(id_of_local[r], id_of_local[q], sharedFrames(locals[r]->frames, locals[q]->frames));
     // n_skip for active map objects that no prediction was associated with, unless a detection of
     // the class that the map's evidence left out (under the class's confidence; a local object seen
     // in too few frames) lies at the object's place, better there than at any other active object

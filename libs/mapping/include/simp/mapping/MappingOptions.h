@@ -80,6 +80,10 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// measured on both offices (doc/results.md); 0.1 also merged real neighbours (tables back
     /// to back, cabinets in a row) whose mapped boxes overlap a little.
     double duplicate_min_overlap = 0.2;
+    /// Project rule: a same-class pair that took one detection each in at least this many camera
+    /// frames is two objects, whatever the rules above say (a detector reports an object once
+    /// per image; CoDetections.h). 0 disables. Measured in doc/mapping.md ("Detected apart").
+    int distinct_codetected_frames = 3;
     /// Project rule (twins by support): a built object with fewer than this fraction of the
     /// detections of a same-class neighbour of its room whose noise model (Eq. perclassdist) gives
     /// its centre a likelihood >= twin_min_likelihood is that neighbour's twin: the persistent error

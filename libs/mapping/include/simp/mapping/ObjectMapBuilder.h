@@ -6,6 +6,7 @@
 /// d_theta (Hungarian association on Eq. costfunc, weighted merge, n_skip / n_match, purge).
 
 #include <mrpt/poses/CPose3D.h>
+#include <simp/mapping/CoDetections.h>
 #include <simp/mapping/MappingOptions.h>
 #include <simp/mapping/SessionTurn.h>
 #include <simp/camera/FloorPlanGrid.h>
@@ -61,6 +62,7 @@ struct LocalObject {
     /// False while it holds only detections behind a wall (MappingOptions::room_behind_wall_margin_m):
     /// it may refine a map object, never become one.
     bool may_start = true;
+    FrameSerials frames;  ///< the frames of the window it took detections from (CoDetections.h)
 };
 
 class ObjectMapBuilder {
@@ -192,6 +194,9 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, int> m_windows_missed_behind_new;  ///< SessionEvidence::windows_missed_behind_new
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     std::unordered_map<std::int64_t, std::vector<SessionBox>> m_session_boxes;  ///< sessionBoxesOf()
+    CoDetections m_codetections;  ///< frames in which two map objects took a detection each
+    /// Two local objects with at least distinct_codetected_frames common frames are two objects.
+    bool detectedApart(const FrameSerials& a, const FrameSerials& b) const;
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
