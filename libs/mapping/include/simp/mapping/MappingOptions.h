@@ -91,7 +91,7 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// collects a comparable count). Left out of confirmedMap(), judged on the counts at that time.
     /// 0 disables. Objects of a given map (setMap) are never compared so: their counts are of
     /// earlier sessions. Measured in doc/results.md ("Twins by support").
-    double twin_max_support_ratio = 0.05;
+    double twin_max_support_ratio = 0.1;
     /// The gate of the rule above: the unnormalized Eq. perclassdist likelihood exp(-0.5 m^b) of
     /// the twin's centre under the neighbour's noise; 0.05 = the 95 % region of a Gaussian model.
     double twin_min_likelihood = 0.05;
