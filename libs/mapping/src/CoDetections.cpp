@@ -51,7 +51,6 @@ void CoDetections::absorb(std::int64_t into, std::int64_t from) {
         row[into] += n;
         m_counts[into][other] += n;
     }
-    if (auto jt = m_counts.find(into); jt != m_counts.end()) jt->second.erase(from);
 }
 
 void CoDetections::forget(std::int64_t id) {

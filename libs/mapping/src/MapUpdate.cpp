@@ -30,7 +30,6 @@ bool mayIntersect(const geometry::Box3D& a, const geometry::Box3D& b) {
     return planarDistance(a, b) <= 0.5 * (a.size.head<2>().norm() + b.size.head<2>().norm());
 }
 
-
 /// `o` has at least `min_fraction` of its volume inside the box of an object of another class of
 /// `m` and does not rise above it (drawers in a cabinet, as annotated): whether a detector sees it
 /// through that box is not known. An object whose top stands above the other box (a cabinet half

@@ -118,7 +118,7 @@ void ObjectMapBuilder::mergeLocalDuplicates() {
         std::size_t bi = 0, bj = 0;
         for (std::size_t i = 0; i < m_local.size(); ++i)
             for (std::size_t j = i + 1; j < m_local.size(); ++j) {
-                if (m_local[i].class_id != m_local[j].class_id || detectedApart(m_local[i].frames, m_local[j].frames)) continue;
+                if (m_local[i].class_id != m_local[j].class_id || detectedApart(sharedFrames(m_local[i].frames, m_local[j].frames))) continue;
                 const bool i_ref = m_local[i].n_match >= m_local[j].n_match;
                 const LocalObject& a = i_ref ? m_local[i] : m_local[j];
                 const LocalObject& b = i_ref ? m_local[j] : m_local[i];
@@ -163,9 +163,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
                     if (!cross_room && gi != gj && evidenceOf(m_g.objects[gi ? i : j].id).windows_matched == 0) continue;
                     if (gi != gj) r = gi ? i : j;  // the earlier object keeps its id
                 }
-                if (m_options.distinct_codetected_frames > 0 &&
-                    m_codetections.count(oi.id, oj.id) >= m_options.distinct_codetected_frames)
-                    continue;
+                if (detectedApart(m_codetections.count(oi.id, oj.id))) continue;
                 const std::size_t o = r == i ? j : i;
                 const world::MapObject& ref = m_g.objects[r];
                 const world::MapObject& other = m_g.objects[o];
@@ -250,8 +248,8 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_codetections.forget(id);
 }
 
-bool ObjectMapBuilder::detectedApart(const FrameSerials& a, const FrameSerials& b) const {
-    return m_options.distinct_codetected_frames > 0 && sharedFrames(a, b) >= m_options.distinct_codetected_frames;
+bool ObjectMapBuilder::detectedApart(int shared_frames) const {
+    return m_options.distinct_codetected_frames > 0 && shared_frames >= m_options.distinct_codetected_frames;
 }
 
 geometry::Box3D ObjectMapBuilder::shownBox(int class_id, const geometry::Box3D& estimate) const {

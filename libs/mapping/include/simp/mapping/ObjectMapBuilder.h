@@ -195,8 +195,8 @@ class ObjectMapBuilder {
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     std::unordered_map<std::int64_t, std::vector<SessionBox>> m_session_boxes;  ///< sessionBoxesOf()
     CoDetections m_codetections;  ///< frames in which two map objects took a detection each
-    /// Two local objects with at least distinct_codetected_frames common frames are two objects.
-    bool detectedApart(const FrameSerials& a, const FrameSerials& b) const;
+    /// A pair detected side by side in this many frames is two objects (distinct_codetected_frames).
+    bool detectedApart(int shared_frames) const;
     geometry::Box3D estimateOf(const world::MapObject& o) const;
     void forget(std::int64_t id);  ///< drops the per-object state of a purged or merged-away object
     /// The map box of a mean of detections: minus the class bias, aligned to the walls.
