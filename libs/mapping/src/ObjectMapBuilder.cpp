@@ -56,6 +56,7 @@ void ObjectMapBuilder::setMap(const world::ObjectMapData& map, bool earlier_sess
     m_windows_missed.clear();
     m_windows_missed_behind_new.clear();
     m_session_boxes.clear();
+    m_codetections = CoDetections();  // pairs of the replaced map's ids
     m_earlier_session = earlier_session;
     m_local.clear();
     m_window_weak.clear();
