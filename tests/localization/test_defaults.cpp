@@ -190,6 +190,7 @@ void expectSame(const simp::maps::CObjectMap::TLikelihoodOptions& a,
     SIMP_EXPECT_SAME(skip_classes_without_noise);
     SIMP_EXPECT_SAME(unmodelled_noise_std_m);
     SIMP_EXPECT_SAME(noise_reference_range_m);
+    SIMP_EXPECT_SAME(yaw_sigma_rad);
     SIMP_EXPECT_SAME(mp_centre_noise_floor);
     SIMP_EXPECT_SAME(default_confidence_threshold);
     for (const auto& name : simp::obs::defaultClassNames()) EXPECT_EQ(a.thresholdOf(name), b.thresholdOf(name)) << name;

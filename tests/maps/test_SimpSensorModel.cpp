@@ -4,6 +4,7 @@
 
 #include "TestMaps.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -59,6 +60,40 @@ TEST(SimpSensorModel, BatchIsTheWeightedSumOfThePairs) {
         EXPECT_EQ(sums[i], expected) << "pose " << i;  // the same operations in the same order
     }
     EXPECT_NEAR(sums[0], 2.0, 1e-9);  // both at their maximum, log 1
+}
+
+TEST(SimpSensorModel, YawTermScoresATurnedBoxBoundedAndFourFold) {
+    // The table of smallMap (1.6 x 0.8 m, yaw 0.3) detected with its centre exact but its box turned
+    // by dyaw, seen from the true pose: p_o = 1, so log p = log p_g (+ log of the yaw factor).
+    // yaw_sigma_rad = 0.1: the factor is exp(-min(1, 50 d^2)), d = sin(2 dyaw) / 2.
+    const auto data = test::smallMap();
+    SimpSensorModelParams with_yaw;
+    with_yaw.yaw_sigma_rad = 0.1;
+    const SimpSensorModel yaw_model(data, with_yaw), paper(data, SimpSensorModelParams{});
+    const TPose2D truth(1.0, -2.0, 0.5);
+    const auto turned = [&](double dyaw, double lx, double ly) {
+        auto d = data;
+        d.objects[1] = test::object(2, d, "table", 4.0, -1.0, 0.3 + dyaw, lx, ly, 0.75);
+        return test::detect(d, truth, {1});
+    };
+    for (const double dyaw : {0.0, 0.0873, 0.1745, -0.05}) {
+        const auto o = turned(dyaw, 1.6, 0.8);
+        const auto det = test::prepared(paper, data, o, 0);
+        ASSERT_TRUE(det.has_value());
+        const double d = 0.5 * std::sin(2 * dyaw);
+        const double expected = -std::min(1.0, 50.0 * d * d);
+        EXPECT_NEAR(yaw_model.logLikelihood(*det, truth) - paper.logLikelihood(*det, truth), expected, 1e-9) << dyaw;
+    }
+    // The same solid described turned by 90 deg with its sides swapped: no yaw penalty.
+    const auto o = turned(M_PI / 2, 0.8, 1.6);
+    const auto det = test::prepared(paper, data, o, 0);
+    ASSERT_TRUE(det.has_value());
+    EXPECT_NEAR(yaw_model.logLikelihood(*det, truth), paper.logLikelihood(*det, truth), 1e-9);
+    EXPECT_NEAR(paper.logLikelihood(*det, truth), 0.0, 1e-9);
+
+    SimpSensorModelParams bad;
+    bad.yaw_sigma_rad = -0.1;
+    EXPECT_THROW(SimpSensorModel(data, bad), std::invalid_argument);
 }
 
 TEST(SimpSensorModel, ClassesWithoutNoiseModel) {

@@ -55,7 +55,9 @@ const io::OptionTable<CObjectMap::TLikelihoodOptions>& CObjectMap::TLikelihoodOp
             .number("edt_max_distance_m", &O::edt_max_distance_m, "m", ValueRange::positive(), "EDT baseline: distance clamp")
             .number("edt_resolution_m", &O::edt_resolution_m, "m", ValueRange::positive(), "EDT baseline: raster cell")
             .number("noise_reference_range_m", &O::noise_reference_range_m, "m", ValueRange::atLeast(0),
-                    "detections farther than this are scored with the noise widened by range / this; 0 = off");
+                    "detections farther than this are scored with the noise widened by range / this; 0 = off")
+            .number("yaw_sigma_rad", &O::yaw_sigma_rad, "rad", ValueRange::atLeast(0),
+                    "> 0: a detected box's yaw is scored against its map object's with this std (4-fold, at most 1 nat; simp model); 0 = off (the paper)");
     return t;
 }
 
@@ -83,6 +85,7 @@ SensorModelParams CObjectMap::TLikelihoodOptions::modelParams() const {
     p.edt_max_distance_m = edt_max_distance_m;
     p.edt_resolution_m = edt_resolution_m;
     p.noise_reference_range_m = noise_reference_range_m;
+    p.yaw_sigma_rad = yaw_sigma_rad;
     return p;
 }
 

@@ -26,7 +26,9 @@ AnySensorModel makeModel(const world::ObjectMapData& data, const SensorModelPara
 
 }  // namespace
 
-SimpSensorModelParams simpParams(const SensorModelParams& p) { return {p.eta, p.mp, p.noise_reference_range_m}; }
+SimpSensorModelParams simpParams(const SensorModelParams& p) {
+    return {p.eta, p.mp, p.noise_reference_range_m, p.yaw_sigma_rad};
+}
 CentreSensorModelParams centreParams(const SensorModelParams& p) { return {p.eta, p.mp, p.noise_reference_range_m}; }
 OverlapSensorModelParams overlapParams(const SensorModelParams& p) { return {p.eta}; }
 EdtSensorModelParams edtParams(const SensorModelParams& p) {

@@ -3,6 +3,7 @@
 #include <simp/maps/SimpSensorModel.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace simp::maps {
 
@@ -10,6 +11,8 @@ void SimpSensorModelParams::check() const {
     checkEta(eta);
     checkProbabilityMapOptions(mp);
     checkNoiseReferenceRange(noise_reference_range_m);
+    if (!(yaw_sigma_rad >= 0.0 && std::isfinite(yaw_sigma_rad)))
+        throw std::invalid_argument("yaw_sigma_rad must be >= 0 (0 = off)");
 }
 
 SimpSensorModel::SimpSensorModel(const world::ObjectMapData& data, const Params& params)
@@ -19,6 +22,7 @@ SimpSensorModel::SimpSensorModel(const world::ObjectMapData& data, const Params&
     for (std::size_t c = 0; c < m_mp.numClasses(); ++c) m_num_usable_objects += m_mp.objectsOf(static_cast<int>(c)).size();
     m_log_eta = std::log(params.eta);
     m_exp_minus_1 = std::exp(-1.0);
+    m_yaw_gain = params.yaw_sigma_rad > 0 ? 0.5 / (params.yaw_sigma_rad * params.yaw_sigma_rad) : 0.0;
 }
 
 bool SimpSensorModel::scoresClass(int map_class) const { return m_mp.hasClass(map_class); }

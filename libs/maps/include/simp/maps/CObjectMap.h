@@ -89,6 +89,11 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         /// Range growth of the detection noise (m): detections farther than this from the robot are
         /// scored with the noise model widened by range / this. 0 = off (the paper's model).
         double noise_reference_range_m = 3.0;
+        /// > 0: std (rad) of a detected box's yaw about its map object's (SimpSensorModelParams::
+        /// yaw_sigma_rad; simp model only): the detections' headings hold the robot's heading where
+        /// their centres are few. 0 = off (the paper). Not serialized (like noise_reference_range_m):
+        /// it comes from the .ini.
+        double yaw_sigma_rad = 0.0;
 
         /// Threshold for a class name.
         double thresholdOf(const std::string& class_name) const;

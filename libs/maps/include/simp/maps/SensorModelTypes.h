@@ -25,6 +25,9 @@ struct SensorModelParams {
     /// is scored with the noise model widened by s = r / this (Sigma -> s^2 Sigma; EDT: sigma -> s
     /// sigma). Monocular depth error grows with distance. 0 = off (the paper's model). simp, d, edt.
     double noise_reference_range_m = 0.0;
+    /// > 0: std (rad) of a detected box's yaw about its map object's, on the 4-fold circle (simp
+    /// only; SimpSensorModelParams::yaw_sigma_rad). 0 = off (the paper).
+    double yaw_sigma_rad = 0.0;
 
     bool operator==(const SensorModelParams& o) const {
         return type == o.type && eta == o.eta && mp.resolution_m == o.mp.resolution_m &&
@@ -33,7 +36,7 @@ struct SensorModelParams {
                mp.unmodelled_noise_std_m == o.mp.unmodelled_noise_std_m &&
                mp.centre_noise_floor == o.mp.centre_noise_floor && edt_sigma_m == o.edt_sigma_m &&
                edt_max_distance_m == o.edt_max_distance_m && edt_resolution_m == o.edt_resolution_m &&
-               noise_reference_range_m == o.noise_reference_range_m;
+               noise_reference_range_m == o.noise_reference_range_m && yaw_sigma_rad == o.yaw_sigma_rad;
     }
     bool operator!=(const SensorModelParams& o) const { return !(*this == o); }
 };
