@@ -49,7 +49,9 @@ mrpt::obs::CSensoryFrame makeFrame(const simp::world::World& w, const mrpt::math
 
 TEST(FrameLikelihood, IsTheGeometricMeanOverAllDetectionsOfAllCameras) {
     const auto w = test::makeWorld();
-    const auto map = makeMap(w);
+    auto map = std::make_shared<simp::maps::CObjectMap>();
+    map->likelihoodOptions.yaw_sigma_rad = 0.0;  // the paper's Eq. combined: each factor in [eta, 1]
+    map->setData(w.objects);
     const mrpt::math::TPose2D robot{3.0, 2.0, 0.4};
     const auto sf = makeFrame(w, robot);
     const std::vector<mrpt::math::TPose2D> poses{robot, {3.3, 2.1, 0.5}, {8.0, 6.0, -2.0}};

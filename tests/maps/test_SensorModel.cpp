@@ -14,12 +14,13 @@ namespace {
 
 using mrpt::math::TPose2D;
 
-/// A map scoring with `type` and each noise model as given (the paper's equations;
+/// A map scoring with `type` and each noise model as given (the paper's equations: no yaw term,
 /// mp_centre_noise_floor = 0 unless `centre_noise_floor` says otherwise).
 CObjectMap makeMap(const world::ObjectMapData& data, SensorModelType type, double centre_noise_floor = 0.0) {
     CObjectMap map;
     map.likelihoodOptions.sensor_model = type;
     map.likelihoodOptions.mp_centre_noise_floor = centre_noise_floor;
+    map.likelihoodOptions.yaw_sigma_rad = 0.0;
     map.setData(data);
     return map;
 }
@@ -255,14 +256,14 @@ TEST(SensorModelSelection, TheIniKeySelectsTheValueTypeWithItsParameters) {
         mrpt::config::CConfigFileMemory ini("[L]\nsensor_model = " + name +
                                             "\neta = 0.2\nnoise_reference_range_m = 1.5\nmp_resolution_m = 0.04\n"
                                             "edt_sigma_m = 0.4\nedt_resolution_m = 0.04\n"
-                                            "mp_centre_noise_floor = 0.3\n");
+                                            "mp_centre_noise_floor = 0.3\nyaw_sigma_rad = 0.05\n");
         CObjectMap map;
         map.likelihoodOptions.loadFromConfigFile(ini, "L");
         map.setData(data);
         ObjectProbabilityMap::Options mp;
         mp.resolution_m = 0.04;
         mp.centre_noise_floor = 0.3;
-        if (name == "simp") expectSameAsTheValueType(map, SimpSensorModel(data, {0.2, mp, 1.5}), data);
+        if (name == "simp") expectSameAsTheValueType(map, SimpSensorModel(data, {0.2, mp, 1.5, 0.05}), data);
         if (name == "d") expectSameAsTheValueType(map, CentreSensorModel(data, {0.2, mp, 1.5}), data);
         if (name == "o") expectSameAsTheValueType(map, OverlapSensorModel(data, {0.2}), data);
         if (name == "edt") expectSameAsTheValueType(map, EdtSensorModel(data, {0.2, 0.4, 2.0, 0.04, 1.5}), data);

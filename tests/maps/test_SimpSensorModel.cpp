@@ -1,11 +1,13 @@
 // SimpSensorModel (Eqs. globaldist, iouscore, combined) as a value type, at hand-computed cases.
 #include <gtest/gtest.h>
+
 #include <simp/maps/SimpSensorModel.h>
 
 #include "TestMaps.h"
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -65,7 +67,9 @@ TEST(SimpSensorModel, BatchIsTheWeightedSumOfThePairs) {
 TEST(SimpSensorModel, YawTermScoresATurnedBoxBoundedAndFourFold) {
     // The table of smallMap (1.6 x 0.8 m, yaw 0.3) detected with its centre exact but its box turned
     // by dyaw, seen from the true pose: p_o = 1, so log p = log p_g (+ log of the yaw factor).
-    // yaw_sigma_rad = 0.1: the factor is exp(-min(1, 50 d^2)), d = sin(2 dyaw) / 2.
+    // yaw_sigma_rad = 0.1: the factor is exp(-min(1, 50 d^2)) / m, d = sin(2 dyaw) / 2, m its mean
+    // for dyaw ~ N(0, 0.1^2). For small angles d ~ dyaw and m = P(|w| < 2) / sqrt(2) + P(|w| > sqrt 2) / e,
+    // w ~ N(0, 1): 0.6749 + 0.0579 = 0.7328 (the sine raises it by about 0.002).
     const auto data = test::smallMap();
     SimpSensorModelParams with_yaw;
     with_yaw.yaw_sigma_rad = 0.1;
@@ -76,19 +80,30 @@ TEST(SimpSensorModel, YawTermScoresATurnedBoxBoundedAndFourFold) {
         d.objects[1] = test::object(2, d, "table", 4.0, -1.0, 0.3 + dyaw, lx, ly, 0.75);
         return test::detect(d, truth, {1});
     };
-    for (const double dyaw : {0.0, 0.0873, 0.1745, -0.05}) {
+    const auto yaw_log_factor = [&](double dyaw) {
         const auto o = turned(dyaw, 1.6, 0.8);
         const auto det = test::prepared(paper, data, o, 0);
-        ASSERT_TRUE(det.has_value());
+        EXPECT_TRUE(det.has_value());
+        return det ? yaw_model.logLikelihood(*det, truth) - paper.logLikelihood(*det, truth) : 0.0;
+    };
+    const double log_mean = yaw_log_factor(0.0);  // -log m: the factor at dyaw = 0 is 1 / m
+    EXPECT_NEAR(std::exp(-log_mean), 0.7328, 0.004);
+    for (const double dyaw : {0.0873, 0.1745, -0.05, 0.6}) {
         const double d = 0.5 * std::sin(2 * dyaw);
-        const double expected = -std::min(1.0, 50.0 * d * d);
-        EXPECT_NEAR(yaw_model.logLikelihood(*det, truth) - paper.logLikelihood(*det, truth), expected, 1e-9) << dyaw;
+        EXPECT_NEAR(yaw_log_factor(dyaw) - log_mean, -std::min(1.0, 50.0 * d * d), 1e-9) << dyaw;
     }
-    // The same solid described turned by 90 deg with its sides swapped: no yaw penalty.
+    // A correct association's yaw error costs nothing on average: the mean factor over detector
+    // yaws drawn with the model's std is 1 (2000 draws: the factor's std is about 0.3, the mean's 0.007).
+    std::mt19937 rng(5);
+    std::normal_distribution<double> yaw_noise(0.0, 0.1);
+    double mean_factor = 0;
+    for (int i = 0; i < 2000; ++i) mean_factor += std::exp(yaw_log_factor(yaw_noise(rng))) / 2000;
+    EXPECT_NEAR(mean_factor, 1.0, 0.03);
+    // The same solid described turned by 90 deg with its sides swapped: the factor of dyaw = 0.
     const auto o = turned(M_PI / 2, 0.8, 1.6);
     const auto det = test::prepared(paper, data, o, 0);
     ASSERT_TRUE(det.has_value());
-    EXPECT_NEAR(yaw_model.logLikelihood(*det, truth), paper.logLikelihood(*det, truth), 1e-9);
+    EXPECT_NEAR(yaw_model.logLikelihood(*det, truth) - paper.logLikelihood(*det, truth), log_mean, 1e-9);
     EXPECT_NEAR(paper.logLikelihood(*det, truth), 0.0, 1e-9);
 
     SimpSensorModelParams bad;

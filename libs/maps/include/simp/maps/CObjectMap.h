@@ -93,7 +93,7 @@ class CObjectMap : public mrpt::maps::CMetricMap {
         /// yaw_sigma_rad; simp model only): the detections' headings hold the robot's heading where
         /// their centres are few. 0 = off (the paper). Not serialized (like noise_reference_range_m):
         /// it comes from the .ini.
-        double yaw_sigma_rad = 0.0;
+        double yaw_sigma_rad = 0.1;
 
         /// Threshold for a class name.
         double thresholdOf(const std::string& class_name) const;

@@ -29,9 +29,12 @@ struct SimpSensorModelParams {
     /// 0 = off (the paper's model).
     double noise_reference_range_m = 0.0;
     /// > 0: the detected box's yaw is scored against o_max's (project addition): p_g is multiplied
-    /// by exp(-min(1, 0.5 d^2 / sigma^2)), d = sin(2 dyaw) / 2 (about dyaw for small angles; a box
-    /// turned by 90 deg is the same solid, so d repeats every 90 deg), sigma = this (rad). Bounded
-    /// like Eq. iouscore: a wrong yaw costs at most 1 nat. 0 = off (the paper's model).
+    /// by exp(-min(1, 0.5 d^2 / sigma^2)) / m, d = sin(2 dyaw) / 2 (about dyaw for small angles; a
+    /// box turned by 90 deg is the same solid, so d repeats every 90 deg), sigma = this (rad), m the
+    /// mean of the exp for dyaw ~ N(0, sigma^2) (0.734 at 0.1): a correct association's yaw error
+    /// costs nothing on average, so eta and the thresholds weighed against it keep their meaning.
+    /// Bounded like Eq. iouscore: a wrong yaw costs at most 1 nat more than a right one. 0 = off
+    /// (the paper's model).
     double yaw_sigma_rad = 0.0;
 
     /// Throws std::invalid_argument naming the parameter.
@@ -84,6 +87,7 @@ class SimpSensorModel {
     double m_log_eta = 0;
     double m_exp_minus_1 = 0;  ///< p_g at IoU = 0
     double m_yaw_gain = 0;     ///< 0.5 / yaw_sigma_rad^2 (0: no yaw term)
+    double m_yaw_scale = 1;    ///< 1 / the mean yaw factor of a correct association (see yaw_sigma_rad)
     IouScore m_iou_score;      ///< Eq. iouscore
 };
 
@@ -108,7 +112,7 @@ inline double SimpSensorModel::pairLogLikelihood(const PreparedDetection& det, d
         // The detected box's axis in the world against the object's: d = sin(dyaw) cos(dyaw).
         const double ax = c * det.rect_robot.c - s * det.rect_robot.s, ay = s * det.rect_robot.c + c * det.rect_robot.s;
         const double d = (of.rect.c * ay - of.rect.s * ax) * (of.rect.c * ax + of.rect.s * ay);
-        p_g *= m_iou_score(1.0 - std::min(1.0, m_yaw_gain * d * d));  // exp(-min(1, ...)), as Eq. iouscore's exp
+        p_g *= m_yaw_scale * m_iou_score(1.0 - std::min(1.0, m_yaw_gain * d * d));  // exp(-min(1, ...)): Eq. iouscore's table
     }
     return std::log(hit.p * p_g + (1.0 - hit.p) * m_params.eta);  // Eq. combined
 }
