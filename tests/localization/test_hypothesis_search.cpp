@@ -195,7 +195,7 @@ TEST(StateMonitor, EnteringLocalizedIsStricterThanStayingWithAnEntryMargin) {
     StateParams p;
     p.local_margin = 10.0;
     p.local_entry_margin = 3.0;
-    FitWindow::Fit at_best{0.9, 10, 1.0, 4};
+    FitWindow::Fit at_best{0.9, 10, 1.0, p.lost_window};
     at_best.local_gain = 0.5 * p.local_entry_margin;
     FitWindow::Fit beside = at_best;  // a better pose nearby, by more than the entry margin only
     beside.local_gain = 0.5 * (p.local_entry_margin + p.local_margin);

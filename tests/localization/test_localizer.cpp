@@ -29,7 +29,7 @@ TEST(StateMonitor, GlobalToLocalizedToLostToLocalized) {
     StateParams p;
     StateMonitor m(p);
     EXPECT_EQ(m.state(), LocalizationState::Global);
-    const FitWindow::Fit good{0.8, 10, 1.0, 4}, bad{0.0, 10, 0.0, 4}, unknown{1.0, 2, 1.0, 2};
+    const FitWindow::Fit good{0.8, 10, 1.0, p.lost_window}, bad{0.0, 10, 0.0, p.lost_window}, unknown{1.0, 2, 1.0, 2};
     // Concentrated and explaining, but only after localized_min_updates such updates.
     for (std::size_t i = 1; i < p.localized_min_updates; ++i)
         EXPECT_EQ(m.update(0.95, 0.1, good, true), LocalizationState::Global);
