@@ -64,6 +64,24 @@ TEST(FitWindow, ExplainsDetectionsAtTheRightPoseOnly) {
     EXPECT_LT(wrong.fraction, 0.5);
 }
 
+TEST(FitWindow, CountsTheDistinctObjectsItExplains) {
+    // Desk, chair and cabinet, then the chair, the cabinet and the board again from 0.5 m further:
+    // six detections of four objects (exact boxes: the two views of one object coincide in the
+    // odometry frame).
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    FitWindow fit;
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo0(10, 10, 0), odo1 = odo0 + mrpt::poses::CPose2D(0.5, 0, 0);
+    const mrpt::poses::CPose2D robot1 = mrpt::poses::CPose2D(robot) + mrpt::poses::CPose2D(0.5, 0, 0);
+    fit.add(*map, observe(w, robot, {0, 1, 2}), odo0, 0.0);
+    fit.add(*map, observe(w, robot1.asTPose(), {1, 2, 3}), odo1, 1.0);
+    EXPECT_EQ(fit.evaluate(*map, robot1, odo1, 1.0).scored, 6u);
+    EXPECT_EQ(fit.explainedObjects(*map, robot1, odo1, 0.75), 4u);
+    // Elsewhere (3.6 m and 1 rad away) no detection lands on an object of its class.
+    EXPECT_EQ(fit.explainedObjects(*map, robot1 + mrpt::poses::CPose2D(3.0, 2.0, 1.0), odo1, 0.75), 0u);
+}
+
 TEST(DetectionNovelty, RepeatsFromOnePlaceWeighLittleNewViewpointsFully) {
     const auto w = makeWorld();
     DetectionNoveltyParams p;

@@ -1,5 +1,6 @@
 #include <simp/localization/LocalizationState.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -75,6 +76,22 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
     if (fit.recent_scored > 0)
         fit.recent_fraction = static_cast<double>(recent_explained) / static_cast<double>(fit.recent_scored);
     return fit;
+}
+
+std::size_t FitWindow::explainedObjects(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                        const mrpt::poses::CPose2D& odometry_now, double radius_m) const {
+    const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
+    std::vector<Placed> objects;  // one explained detection per object
+    for (const auto& it : m_items) {
+        const mrpt::poses::CPose2D world_T_frame = estimate + (it.odometry_pose - odometry_now);
+        const auto log_p = map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
+        if (!log_p || *log_p < log_explained) continue;
+        const bool seen = std::any_of(objects.begin(), objects.end(), [&](const Placed& o) {
+            return o.map_class == it.map_class && std::hypot(o.x - it.odo_x, o.y - it.odo_y) <= radius_m;
+        });
+        if (!seen) objects.push_back({it.map_class, it.odo_x, it.odo_y});
+    }
+    return objects.size();
 }
 
 void FitWindow::scorePoses(const maps::CObjectMap& map, const std::vector<mrpt::math::TPose2D>& poses,

@@ -108,6 +108,8 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
             .integer("window", &O::window, ValueRange::between(1, 1000), "detections since lost it is judged on (the last ones)")
             .number("window_max_age_s", &O::window_max_age_s, "s", ValueRange::positive(), "... and not older than this")
             .number("replace_max_fit", &O::replace_max_fit, "", ValueRange::fraction(), "it replaces the current set elsewhere only when the current estimate explains at most this share of the window")
+            .integer("min_objects", &O::min_objects, ValueRange::between(0, 1000), "... and only when its estimate explains detections of at least this many distinct objects of the window (0: no such condition)")
+            .number("object_radius_m", &O::object_radius_m, "m", ValueRange::positive(), "detections of one class this close (odometry frame) are one object for min_objects")
             .integer("scan_window", &O::scan_window, ValueRange::between(0, 10000), "simp+lidar: the scans since `lost` scored at both estimates (0: no scan veto)")
             .number("scan_veto_nats", &O::scan_veto_nats, "nats", ValueRange::between(0, 1e6), "a challenger elsewhere does not take over when those scans prefer the current estimate by more than this (the scan model's weighted log-likelihood)");
     return t;

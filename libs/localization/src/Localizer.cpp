@@ -495,6 +495,8 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     if (!near && c.replace_max_fit < 1.0 &&
         m_since_lost.evaluate(*m_map, now, m_odometry, t_s).fraction > c.replace_max_fit)
         return false;
+    if (!near && c.min_objects > 0 && m_since_lost.explainedObjects(*m_map, ch_now, m_odometry, c.object_radius_m) < c.min_objects)
+        return false;
     if (!near && m_scan_model && m_scans_since_lost.size() > 0) {  // the LiDAR's say on the way since `lost`
         std::vector<double> scan_log;
         m_scans_since_lost.score(*m_scan_model, {now.asTPose(), ch_now.asTPose()}, m_odometry, scan_log);

@@ -86,6 +86,11 @@ class FitWindow {
     /// each detection at estimate (+) (odometry_now^-1 (+) its odometry pose).
     Fit evaluate(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
                  const mrpt::poses::CPose2D& odometry_now, double t_now_s);
+    /// The distinct objects the window's detections show at `estimate` that it explains: explained
+    /// detections of one class whose centres (odometry frame) lie within radius_m of each other count
+    /// once (the window as left by the last evaluate()).
+    std::size_t explainedObjects(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                 const mrpt::poses::CPose2D& odometry_now, double radius_m) const;
     void clear() { m_items.clear(); }
     std::size_t size() const { return m_items.size(); }
     /// A detection of the window placed in the odometry frame: its map class and box centre (m).

@@ -76,6 +76,12 @@ struct ChallengerParams {
     /// most this share of the window: a kidnapped estimate explains next to nothing, an estimate
     /// made `lost` by moved furniture still explains part (1: no such condition).
     double replace_max_fit = 0.1;
+    /// ... and only when its estimate explains detections of at least min_objects distinct objects of
+    /// the window (detections of one class within object_radius_m (m) of each other, in the odometry
+    /// frame, are one object): a look-alike place explains the few objects of a detection-poor
+    /// stretch, the robot's true place after a kidnap the several it passes. 0: no such condition.
+    std::size_t min_objects = 4;
+    double object_radius_m = 0.75;
     /// With a LiDAR (simp+lidar): the scans since `lost` (the last scan_window of them) are scored at
     /// both estimates too, and a challenger elsewhere takes over only when they do not prefer the current
     /// estimate by more than scan_veto_nats (the scan model's weighted log-likelihood). One scan does not
