@@ -5,6 +5,14 @@
 #include <vector>
 
 namespace simp::localization {
+namespace {
+
+/// Two detections (class, centre in the odometry frame) within sqrt(r2) of each other, of one class.
+bool sameObject(int class_a, double xa, double ya, int class_b, double xb, double yb, double r2) {
+    return class_a == class_b && (xa - xb) * (xa - xb) + (ya - yb) * (ya - yb) <= r2;
+}
+
+}  // namespace
 
 std::string toString(LocalizationState s) {
     switch (s) {
@@ -35,10 +43,21 @@ std::vector<FitWindow::Placed> FitWindow::placed() const {
     return out;
 }
 
+std::optional<double> FitWindow::logLikelihoodAt(const maps::CObjectMap& map, const Item& it,
+                                                 const mrpt::poses::CPose2D& estimate,
+                                                 const mrpt::poses::CPose2D& odometry_now) {
+    const mrpt::poses::CPose2D world_T_frame = estimate + (it.odometry_pose - odometry_now);
+    return map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
+}
+
+double FitWindow::logExplained(const maps::CObjectMap& map) const {
+    return std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
+}
+
 FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
                                    const mrpt::poses::CPose2D& odometry_now, double t_now_s) {
     while (!m_items.empty() && t_now_s - m_items.front().t_s > m_params.fit_max_age_s) m_items.pop_front();
-    const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
+    const double log_explained = logExplained(map);
     Fit fit;
     // Newest first. With object_radius_m > 0 a detection joins the (newest) object of its class
     // within the radius, and an object is explained when any of its detections is.
@@ -50,14 +69,13 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
     std::vector<Object> objects;
     const double r2 = m_params.object_radius_m * m_params.object_radius_m;
     for (auto it = m_items.rbegin(); it != m_items.rend(); ++it) {
-        const mrpt::poses::CPose2D world_T_frame = estimate + (it->odometry_pose - odometry_now);
-        const auto log_p = map.detectionLogLikelihood(*it->obs, it->k, world_T_frame.asTPose());
+        const auto log_p = logLikelihoodAt(map, *it, estimate, odometry_now);
         if (!log_p) continue;
         const bool ok = *log_p >= log_explained;
         Object* same = nullptr;
         if (m_params.object_radius_m > 0)
             for (auto& o : objects)
-                if (o.map_class == it->map_class && (o.x - it->odo_x) * (o.x - it->odo_x) + (o.y - it->odo_y) * (o.y - it->odo_y) <= r2) {
+                if (sameObject(o.map_class, o.x, o.y, it->map_class, it->odo_x, it->odo_y, r2)) {
                     same = &o;
                     break;
                 }
@@ -80,14 +98,13 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
 
 std::size_t FitWindow::explainedObjects(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
                                         const mrpt::poses::CPose2D& odometry_now, double radius_m) const {
-    const double log_explained = std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
+    const double log_explained = logExplained(map), r2 = radius_m * radius_m;
     std::vector<Placed> objects;  // one explained detection per object
     for (const auto& it : m_items) {
-        const mrpt::poses::CPose2D world_T_frame = estimate + (it.odometry_pose - odometry_now);
-        const auto log_p = map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
+        const auto log_p = logLikelihoodAt(map, it, estimate, odometry_now);
         if (!log_p || *log_p < log_explained) continue;
         const bool seen = std::any_of(objects.begin(), objects.end(), [&](const Placed& o) {
-            return o.map_class == it.map_class && std::hypot(o.x - it.odo_x, o.y - it.odo_y) <= radius_m;
+            return sameObject(o.map_class, o.x, o.y, it.map_class, it.odo_x, it.odo_y, r2);
         });
         if (!seen) objects.push_back({it.map_class, it.odo_x, it.odo_y});
     }

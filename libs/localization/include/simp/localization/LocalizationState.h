@@ -18,6 +18,7 @@
 
 #include <deque>
 #include <limits>
+#include <optional>
 #include <vector>
 #include <string>
 
@@ -113,6 +114,13 @@ class FitWindow {
         int map_class = -1;
         double odo_x = 0, odo_y = 0;  ///< the detection's centre in the odometry frame (m)
     };
+    /// log p of item `it` with the robot at `estimate` now (its frame at estimate (+) (odometry_now^-1
+    /// (+) its odometry pose)); std::nullopt when the map does not score it.
+    static std::optional<double> logLikelihoodAt(const maps::CObjectMap& map, const Item& it,
+                                                 const mrpt::poses::CPose2D& estimate,
+                                                 const mrpt::poses::CPose2D& odometry_now);
+    /// A detection is explained when its log-likelihood is at least this (explained_ratio x eta).
+    double logExplained(const maps::CObjectMap& map) const;
     StateParams m_params;
     std::deque<Item> m_items;
 };
