@@ -181,6 +181,13 @@ void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b
     SIMP_EXPECT_SAME(min_weight);
     SIMP_EXPECT_SAME(track_radius_m);
     SIMP_EXPECT_SAME(track_timeout_s);
+    SIMP_EXPECT_SAME(unmapped_min_detections);
+    SIMP_EXPECT_SAME(unmapped_min_span_s);
+    SIMP_EXPECT_SAME(unmapped_max_explained);
+    SIMP_EXPECT_SAME(unmapped_min_fit);
+    SIMP_EXPECT_SAME(unmapped_while_lost);
+    SIMP_EXPECT_SAME(unmapped_tolerance_m);
+    SIMP_EXPECT_SAME(unmapped_tolerance_rad);
 }
 
 void expectSame(const simp::maps::CObjectMap::TLikelihoodOptions& a,

@@ -1,5 +1,4 @@
-/// The online localizer and its parts: state transitions, tempering of repeated detections,
-/// detection-driven injection, pruning without teleported weight, KLD count, and a kidnapped robot
+/// The online localizer and its parts: state transitions, detection-driven injection, pruning without teleported weight, KLD count, and a kidnapped robot
 /// end to end on the synthetic scenario.
 
 #include "SyntheticScenario.h"
@@ -10,7 +9,6 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/random/RandomGenerators.h>
-#include <simp/localization/DetectionNovelty.h>
 #include <simp/localization/DetectionPoseSampler.h>
 #include <simp/localization/LocalizationState.h>
 #include <simp/localization/Localizer.h>
@@ -80,28 +78,6 @@ TEST(FitWindow, CountsTheDistinctObjectsItExplains) {
     EXPECT_EQ(fit.explainedObjects(*map, robot1, odo1, 0.75), 4u);
     // Elsewhere (3.6 m and 1 rad away) no detection lands on an object of its class.
     EXPECT_EQ(fit.explainedObjects(*map, robot1 + mrpt::poses::CPose2D(3.0, 2.0, 1.0), odo1, 0.75), 0u);
-}
-
-TEST(DetectionNovelty, RepeatsFromOnePlaceWeighLittleNewViewpointsFully) {
-    const auto w = makeWorld();
-    DetectionNoveltyParams p;
-    DetectionNovelty n(p);
-    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
-    const mrpt::poses::CPose2D odo(0, 0, 0);
-    EXPECT_EQ(n.weigh(*observe(w, robot, {0}), odo, 0.0), std::vector<double>{1.0});  // first sight
-    EXPECT_EQ(n.weigh(*observe(w, robot, {0}), odo, 0.2), std::vector<double>{p.min_weight});  // same place
-    // Half the decorrelation distance later: half a detection; a whole one: a full detection.
-    const auto half = mrpt::poses::CPose2D(0.5 * p.decorrelation_distance_m, 0, 0);
-    const mrpt::math::TPose2D robot_half = (mrpt::poses::CPose2D(robot) + half).asTPose();
-    EXPECT_NEAR(n.weigh(*observe(w, robot_half, {0}), odo + half, 0.4)[0], 0.5, 1e-9);
-    const auto far = half + mrpt::poses::CPose2D(p.decorrelation_distance_m, 0, 0);
-    const mrpt::math::TPose2D robot_far = (mrpt::poses::CPose2D(robot) + far).asTPose();
-    EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6)[0], 1.0);
-    // Forgotten after the timeout; off when the distance is 0.
-    EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6 + p.track_timeout_s + 1)[0], 1.0);
-    DetectionNovelty off(DetectionNoveltyParams{0.0, 0.1, 1.0, 20.0});
-    off.weigh(*observe(w, robot, {0}), odo, 0.0);
-    EXPECT_EQ(off.weigh(*observe(w, robot, {0}), odo, 0.1)[0], 1.0);
 }
 
 TEST(DetectionPoseSampler, DrawsPosesThatPutTheDetectionOnAnObjectOfItsClass) {

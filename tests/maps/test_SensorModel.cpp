@@ -224,6 +224,24 @@ TEST(SensorModelSimp, CamerasTogetherEqualOneCallPerCameraBitForBit) {
     for (std::size_t i = 0; i < poses.size(); ++i) ASSERT_EQ(together[i], separate[i]) << "pose " << i;
 }
 
+TEST(SensorModelSimp, AZeroWeightDetectionIsNeitherScoredNorCounted) {
+    // Exponent 0 marks a detection the filter leaves out (an object the map does not hold there):
+    // the sums and the count equal those of the observation without it.
+    const auto data = test::smallMap();
+    const auto map = makeMap(data, SensorModelType::Simp);
+    const auto with = test::detect(data, kTruth, {0, 1, 2});
+    const auto without = test::detect(data, kTruth, {0, 2});
+    const std::vector<double> weights = {1.0, 0.0, 0.5}, kept = {1.0, 0.5};
+    const std::vector<TPose2D> poses = {kTruth, TPose2D(kTruth.x + 0.3, kTruth.y - 0.2, kTruth.phi + 0.1)};
+    std::vector<double> a(poses.size(), 0.0), b(poses.size(), 0.0);
+    std::size_t used_a = 0, used_b = 0;
+    map.accumulateLogLikelihoods(with, poses.data(), poses.size(), a.data(), used_a, weights.data());
+    map.accumulateLogLikelihoods(without, poses.data(), poses.size(), b.data(), used_b, kept.data());
+    EXPECT_EQ(used_a, 2u);
+    EXPECT_EQ(used_b, 2u);
+    for (std::size_t i = 0; i < poses.size(); ++i) EXPECT_EQ(a[i], b[i]) << "pose " << i;
+}
+
 /// The value type of `name` built directly with the parameters the .ini of SelectedByTheIniKey sets.
 template <typename Model>
 void expectSameAsTheValueType(const CObjectMap& map, const Model& model, const world::ObjectMapData& data) {

@@ -24,16 +24,38 @@ std::string toString(LocalizationState s) {
 }
 
 void FitWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
-                    const mrpt::poses::CPose2D& odometry_pose, double t_s) {
+                    const mrpt::poses::CPose2D& odometry_pose, double t_s, const std::vector<double>* weights) {
     for (std::size_t k = 0; k < obs->size(); ++k) {
         const int cls = map.usableClassOf(*obs, k);
-        if (cls < 0) continue;
+        if (cls < 0 || (weights && k < weights->size() && (*weights)[k] == 0.0)) continue;
         const auto c = obs->boxInRobot(k).center;
         const double co = std::cos(odometry_pose.phi()), so = std::sin(odometry_pose.phi());
         m_items.push_back({obs, k, odometry_pose, t_s, cls, odometry_pose.x() + co * c.x() - so * c.y(),
                            odometry_pose.y() + so * c.x() + co * c.y()});
         if (m_items.size() > m_params.fit_window) m_items.pop_front();
     }
+}
+
+std::vector<FitWindow::Judged> FitWindow::judgeAt(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                                  const mrpt::poses::CPose2D& odometry_now, double t_s,
+                                                  double tolerance_m, double tolerance_rad) const {
+    std::vector<Judged> out;
+    const double log_explained = logExplained(map);
+    for (auto it = m_items.rbegin(); it != m_items.rend() && it->t_s == t_s; ++it) {
+        bool scored = false, explained = false;
+        for (int i = -1; i <= 1 && !explained; ++i)
+            for (int j = -1; j <= 1 && !explained; ++j)
+                for (int h = -1; h <= 1 && !explained; ++h) {
+                    const mrpt::poses::CPose2D pose(estimate.x() + i * tolerance_m, estimate.y() + j * tolerance_m,
+                                                    estimate.phi() + h * tolerance_rad);
+                    const auto log_p = logLikelihoodAt(map, *it, pose, odometry_now);
+                    if (!log_p) break;  // not scored at any pose (its class)
+                    scored = true;
+                    explained = *log_p >= log_explained;
+                }
+        if (scored) out.push_back({it->obs.get(), it->k, it->odometry_pose, explained});
+    }
+    return out;
 }
 
 std::vector<FitWindow::Placed> FitWindow::placed() const {

@@ -44,7 +44,15 @@ const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable() {
                     "robot travel after which a detection's error is new; 0 = off")
             .number("min_weight", &O::min_weight, "", ValueRange::aboveUpTo(0, 1), "weight of an immediate repeat")
             .number("track_radius_m", &O::track_radius_m, "m", ValueRange::positive(), "same class within this distance = same object")
-            .number("track_timeout_s", &O::track_timeout_s, "s", ValueRange::positive(), "a track not seen for this long is forgotten");
+            .number("track_timeout_s", &O::track_timeout_s, "s", ValueRange::positive(), "a track not seen for this long is forgotten")
+            .integer("unmapped_min_detections", &O::unmapped_min_detections, ValueRange::between(0, 1e6),
+                     "a track is unmapped (its detections not scored) after this many judged detections ...; 0 = off")
+            .number("unmapped_min_span_s", &O::unmapped_min_span_s, "s", ValueRange::nonNegative(), "... over at least this time ...")
+            .number("unmapped_max_explained", &O::unmapped_max_explained, "", ValueRange::fraction(), "... of which the estimate explained at most this fraction")
+            .number("unmapped_min_fit", &O::unmapped_min_fit, "", ValueRange::fraction(), "judged only while localized with at least this fit ...")
+            .flag("unmapped_while_lost", &O::unmapped_while_lost, "... or also while lost with that fit")
+            .number("unmapped_tolerance_m", &O::unmapped_tolerance_m, "m", ValueRange::nonNegative(), "... at the estimate or a pose this close to it")
+            .number("unmapped_tolerance_rad", &O::unmapped_tolerance_rad, "rad", ValueRange::nonNegative(), "... and turned this little from it");
     return t;
 }
 

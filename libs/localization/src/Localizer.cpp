@@ -358,8 +358,8 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         if (auto scan = lastScan(frame)) m_pending_scan = scan;
     for (auto& o : observations) {
         o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
-        m_fit.add(*m_map, o.obs, m_odometry, t_s);
-        if (m_opts.challenger.enabled) m_since_lost.add(*m_map, o.obs, m_odometry, t_s);
+        m_fit.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
+        if (m_opts.challenger.enabled) m_since_lost.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
     }
 
     StepRecord rec;
@@ -417,10 +417,21 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
             m_since_lost.clear();
         }
         if (challenge(t_s, now, rec.detections > 0, before)) {  // the challenger's set is the filter now
+            m_novelty.clearUnmapped();  // judged against the estimate it replaced
             now = mrpt::poses::CPose2D(m_summary->estimate) + m_pending;
             fit = m_fit.evaluate(*m_map, now, m_odometry, t_s);
         }
     }
+    // This frame's detections judged at a localized estimate that explains the rest of the window:
+    // an object it keeps leaving unexplained is not where the map has it (DetectionNovelty).
+    const auto judging = m_monitor.state() == LocalizationState::Localized ||
+                         (m_opts.novelty.unmapped_while_lost && m_monitor.state() == LocalizationState::Lost);
+    if (m_opts.novelty.unmapped_min_detections > 0 && judging &&
+        fit.scored >= m_opts.state.fit_min_detections && fit.fraction >= m_opts.novelty.unmapped_min_fit)
+        for (const auto& j : m_fit.judgeAt(*m_map, now, m_odometry, t_s, m_opts.novelty.unmapped_tolerance_m,
+                                           m_opts.novelty.unmapped_tolerance_rad))
+            m_novelty.judge(*j.obs, j.k, j.odometry_pose, j.explained, t_s);
+    rec.unmapped_objects = m_novelty.unmappedCount();
     const ParticleSummary& s = *m_summary;
     rec.estimate = now.asTPose();
     rec.mean = s.mean;

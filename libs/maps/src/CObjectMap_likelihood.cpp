@@ -50,7 +50,7 @@ std::size_t CObjectMap::prepareDetections(const SensorModel& model, const simp::
     std::size_t count = 0;
     for (; first < obs.size() && count < cap; ++first) {
         const int cls = usableClassOf(obs, first);
-        if (cls < 0) continue;
+        if (cls < 0 || (weights && weights[first] == 0.0)) continue;  // weight 0: not scored, not counted
         auto prepared =
             model.prepare(cls, obs.boxInRobot(first), obs.footprintInRobot(first), weights ? weights[first] : 1.0);
         if (prepared) out[count++] = *prepared;

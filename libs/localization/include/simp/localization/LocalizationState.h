@@ -67,9 +67,10 @@ class FitWindow {
    public:
     explicit FitWindow(const StateParams& params = {}) : m_params(params) {}
     /// Adds the used detections of `obs` (camera pose in the robot frame) seen at time t_s with
-    /// the robot at `odometry_pose` (odometry frame).
+    /// the robot at `odometry_pose` (odometry frame), but none whose weight (one per detection, if
+    /// given) is 0: a detection the filter does not score (DetectionNovelty's unmapped objects).
     void add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
-             const mrpt::poses::CPose2D& odometry_pose, double t_s);
+             const mrpt::poses::CPose2D& odometry_pose, double t_s, const std::vector<double>* weights = nullptr);
     struct Fit {
         double fraction = 0;        ///< explained / scored, in [0, 1]
         std::size_t scored = 0;     ///< detections (objects, with object_radius_m > 0) in the window
@@ -92,6 +93,18 @@ class FitWindow {
     /// once (the window as left by the last evaluate()).
     std::size_t explainedObjects(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
                                  const mrpt::poses::CPose2D& odometry_now, double radius_m) const;
+    /// The window's detections seen at time t_s (the last frame), each with whether the robot at
+    /// `estimate` now, or at a pose within tolerance_m in x and y and tolerance_rad in heading of
+    /// it (3 x 3 x 3 grid), explains it: an estimate within the bounds may be off by that much.
+    struct Judged {
+        const simp::obs::CObservationObjects3D* obs = nullptr;
+        std::size_t k = 0;
+        mrpt::poses::CPose2D odometry_pose;
+        bool explained = false;
+    };
+    std::vector<Judged> judgeAt(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                const mrpt::poses::CPose2D& odometry_now, double t_s, double tolerance_m,
+                                double tolerance_rad) const;
     void clear() { m_items.clear(); }
     std::size_t size() const { return m_items.size(); }
     /// A detection of the window placed in the odometry frame: its map class and box centre (m).

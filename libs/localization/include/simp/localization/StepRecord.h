@@ -44,6 +44,7 @@ struct StepRecord {
     LocalizationState challenger_state = LocalizationState::Global;
     double challenger_fit = std::numeric_limits<double>::quiet_NaN();
     double challenger_lead = std::numeric_limits<double>::quiet_NaN();
+    std::size_t unmapped_objects = 0;  ///< tracks DetectionNovelty holds for objects the map does not hold there
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 

@@ -145,7 +145,8 @@ class CObjectMap : public mrpt::maps::CMetricMap {
 
     /// Fast batch path for N particle poses: adds log p of every used detection to sum_log[i]
     /// and the number of used detections to `used` (same for all particles). With `weights`
-    /// (one per detection of `obs`), detection k adds weights[k] log p instead.
+    /// (one per detection of `obs`), detection k adds weights[k] log p instead; weight 0 = not
+    /// used (not counted either).
     void accumulateLogLikelihoods(const simp::obs::CObservationObjects3D& obs, const mrpt::math::TPose2D* poses,
                                   std::size_t n, double* sum_log, std::size_t& used,
                                   const double* weights = nullptr) const;
