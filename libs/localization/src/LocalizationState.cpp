@@ -40,20 +40,22 @@ std::vector<FitWindow::Judged> FitWindow::judgeAt(const maps::CObjectMap& map, c
                                                   const mrpt::poses::CPose2D& odometry_now, double t_s,
                                                   double tolerance_m, double tolerance_rad) const {
     std::vector<Judged> out;
+    const auto model = map.sensorModel();
     const double log_explained = logExplained(map);
     for (auto it = m_items.rbegin(); it != m_items.rend() && it->t_s == t_s; ++it) {
-        bool scored = false, explained = false;
+        // Prepared once, scored at up to 27 poses (as scorePoses() does for the whole window).
+        const auto prepared = model->prepare(it->map_class, it->obs->boxInRobot(it->k), it->obs->footprintInRobot(it->k));
+        if (!prepared) continue;
+        const mrpt::poses::CPose2D rel = it->odometry_pose - odometry_now;
+        bool explained = false;
         for (int i = -1; i <= 1 && !explained; ++i)
             for (int j = -1; j <= 1 && !explained; ++j)
                 for (int h = -1; h <= 1 && !explained; ++h) {
                     const mrpt::poses::CPose2D pose(estimate.x() + i * tolerance_m, estimate.y() + j * tolerance_m,
                                                     estimate.phi() + h * tolerance_rad);
-                    const auto log_p = logLikelihoodAt(map, *it, pose, odometry_now);
-                    if (!log_p) break;  // not scored at any pose (its class)
-                    scored = true;
-                    explained = *log_p >= log_explained;
+                    explained = model->logLikelihood(*prepared, (pose + rel).asTPose()) >= log_explained;
                 }
-        if (scored) out.push_back({it->obs.get(), it->k, it->odometry_pose, explained});
+        out.push_back({it->obs.get(), it->k, it->odometry_pose, explained});
     }
     return out;
 }
