@@ -120,9 +120,9 @@ TEST(IouScore, EqualsExpWithinAFewUlp) {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     double worst = 0.0;
     for (int i = 0; i <= 200000; ++i) {
-        // Random values, the table's knots j/64 and their neighbours, and the ends 0 and 1.
+        // Random values, the table's knots j/256 and their neighbours, and the ends 0 and 1.
         double iou = i < 100000 ? u(rng) : (i - 100000) / 1562.5;
-        if (i % 3 == 0) iou = std::nextafter(std::floor(iou * 64) / 64, 2.0);
+        if (i % 3 == 0) iou = std::nextafter(std::floor(iou * 256) / 256, 2.0);
         iou = std::clamp(iou, 0.0, 1.0);
         const double expected = std::exp(iou - 1.0);
         worst = std::max(worst, std::abs(score(iou) - expected) / expected);
@@ -131,6 +131,23 @@ TEST(IouScore, EqualsExpWithinAFewUlp) {
     EXPECT_EQ(score(1.0), std::exp(0.0));
     EXPECT_EQ(score(0.0), std::exp(-1.0));
     EXPECT_EQ(score(-0.5), std::exp(-1.0));  // clamped like the IoU itself
+}
+
+TEST(IouScore, WithAYawPenaltyEqualsExpOfTheSumWithinAFewUlp) {
+    const IouScore score;
+    std::mt19937_64 rng(10);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    double worst = 0.0;
+    for (int i = 0; i < 200000; ++i) {
+        const double iou = u(rng), penalty = i % 4 == 0 ? 0.0 : u(rng);
+        const double expected = std::exp(iou - 1.0 - penalty);
+        worst = std::max(worst, std::abs(score(iou, penalty) - expected) / expected);
+    }
+    // One rounding more than the plain score: iou - penalty + 1 before the split.
+    EXPECT_LT(worst, 8e-16);
+    EXPECT_EQ(score(0.0, 1.0), std::exp(-2.0));
+    EXPECT_EQ(score(1.0, 0.0), 1.0);
+    EXPECT_EQ(score(0.5, 3.0), score(0.5, 1.0));  // the penalty is at most 1 nat
 }
 
 INSTANTIATE_TEST_SUITE_P(SimpAndO, Rectangles, ::testing::Values(SensorModelType::Simp, SensorModelType::O),

@@ -1,5 +1,6 @@
 #include <simp/localization/ParticleSummary.h>
 
+#include <simp/geometry/SinCos.h>
 #include <simp/localization/Angle.h>
 
 #include <algorithm>
@@ -169,11 +170,7 @@ ParticleSummary summarizeParticles(const mrpt::poses::CPosePDFParticles& pdf, co
     s.particle_count = n;
 
     std::vector<double> cos_phi(n), sin_phi(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const double phi = pose[i].phi;  // one value for both: the compiler makes it one sincos
-        cos_phi[i] = std::cos(phi);
-        sin_phi[i] = std::sin(phi);
-    }
+    for (std::size_t i = 0; i < n; ++i) geometry::sinCos(pose[i].phi, sin_phi[i], cos_phi[i]);
     WeightedMean all;
     double sum_w2 = 0;
     for (std::size_t i = 0; i < n; ++i) {

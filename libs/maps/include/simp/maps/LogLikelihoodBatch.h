@@ -5,6 +5,7 @@
 /// call, virtual or not, and no branch on the model per (particle x detection) pair.
 
 #include <mrpt/math/TPose2D.h>
+#include <simp/geometry/SinCos.h>
 #include <simp/maps/PreparedDetection.h>
 
 #include <cmath>
@@ -27,7 +28,8 @@ void accumulateLogLikelihoodGroups(const Model& model, const PreparedDetection* 
     typename Model::Scratch scratch;  // reused for every pair
     for (std::size_t i = 0; i < n; ++i) {
         const auto& p = poses[i];
-        const double c = std::cos(p.phi), s = std::sin(p.phi);
+        double s, c;
+        geometry::sinCos(p.phi, s, c);
         std::size_t k = 0;
         for (std::size_t g = 0; g < num_groups; ++g) {
             double acc = 0.0;
@@ -49,7 +51,9 @@ void accumulateLogLikelihoodBatch(const Model& model, const PreparedDetection* d
 template <typename Model>
 double logLikelihoodAt(const Model& model, const PreparedDetection& det, const mrpt::math::TPose2D& pose) {
     typename Model::Scratch scratch;
-    return model.pairLogLikelihood(det, std::cos(pose.phi), std::sin(pose.phi), pose.x, pose.y, scratch);
+    double s, c;
+    geometry::sinCos(pose.phi, s, c);
+    return model.pairLogLikelihood(det, c, s, pose.x, pose.y, scratch);
 }
 
 }  // namespace simp::maps

@@ -8,6 +8,7 @@
 #include <simp/geometry/ConvexPolygon.h>
 #include <simp/maps/FootprintOverlap.h>
 #include <simp/maps/IouScore.h>
+#include <simp/maps/TableLog.h>
 #include <simp/maps/MapFootprints.h>
 #include <simp/maps/PreparedDetection.h>
 #include <simp/world/ObjectMapData.h>
@@ -68,6 +69,7 @@ class OverlapSensorModel {
     MapFootprints m_footprints;
     double m_log_eta = 0;
     IouScore m_iou_score;  ///< Eq. iouscore
+    TableLog m_log;        ///< Eq. combined's log
 };
 
 // The kernel (see pairLogLikelihood()).
@@ -86,7 +88,7 @@ inline double OverlapSensorModel::pairLogLikelihood(const PreparedDetection& det
     }
     if (best_iou <= 0.0) return m_log_eta;
     const double p_g = m_iou_score(best_iou);  // Eq. iouscore
-    return std::log(best_iou * p_g + (1.0 - best_iou) * m_params.eta);
+    return m_log(best_iou * p_g + (1.0 - best_iou) * m_params.eta);
 }
 
 }  // namespace simp::maps

@@ -11,6 +11,7 @@
 #include <simp/maps/MapFootprints.h>
 #include <simp/maps/ObjectProbabilityMap.h>
 #include <simp/maps/PreparedDetection.h>
+#include <simp/maps/TableLog.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <algorithm>
@@ -89,6 +90,7 @@ class SimpSensorModel {
     double m_yaw_gain = 0;     ///< 0.5 / yaw_sigma_rad^2 (0: no yaw term)
     double m_yaw_scale = 1;    ///< 1 / the mean yaw factor of a correct association (see yaw_sigma_rad)
     IouScore m_iou_score;      ///< Eq. iouscore
+    TableLog m_log;            ///< Eq. combined's log
 };
 
 // The kernel (see pairLogLikelihood()).
@@ -102,19 +104,22 @@ inline double SimpSensorModel::pairLogLikelihood(const PreparedDetection& det, d
     if (hit.object < 0) return m_log_eta;  // p_o = 0: Eq. combined gives eta
     // Eq. iouscore: p_g = exp(-(1 - IoU)) between the detection footprint and o_max's.
     const ObjectFootprint& of = m_footprints.objects[static_cast<std::size_t>(hit.object)];
-    double p_g = m_exp_minus_1;  // IoU = 0
+    double iou = 0.0;
     const Eigen::Vector2d wc(wx, wy);
     if (circlesOverlap(wc, det.radius_m, of.circle_center_m, of.circle_radius_m)) {
         scratch.world_valid = false;
-        p_g = m_iou_score(footprintIou(det, c, s, tx, ty, wc, of, scratch));
+        iou = footprintIou(det, c, s, tx, ty, wc, of, scratch);
     }
+    double p_g;
     if (m_yaw_gain > 0 && det.is_rect && of.is_rect) {
         // The detected box's axis in the world against the object's: d = sin(dyaw) cos(dyaw).
         const double ax = c * det.rect_robot.c - s * det.rect_robot.s, ay = s * det.rect_robot.c + c * det.rect_robot.s;
         const double d = (of.rect.c * ay - of.rect.s * ax) * (of.rect.c * ax + of.rect.s * ay);
-        p_g *= m_yaw_scale * m_iou_score(1.0 - std::min(1.0, m_yaw_gain * d * d));  // exp(-min(1, ...)): Eq. iouscore's table
+        p_g = m_yaw_scale * m_iou_score(iou, m_yaw_gain * d * d);  // p_g exp(-min(1, ...)) in one evaluation
+    } else {
+        p_g = iou > 0.0 ? m_iou_score(iou) : m_exp_minus_1;
     }
-    return std::log(hit.p * p_g + (1.0 - hit.p) * m_params.eta);  // Eq. combined
+    return m_log(hit.p * p_g + (1.0 - hit.p) * m_params.eta);  // Eq. combined
 }
 
 }  // namespace simp::maps
