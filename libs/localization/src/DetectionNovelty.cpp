@@ -9,8 +9,9 @@ namespace {
 Eigen::Vector2d centreInOdometry(const simp::obs::CObservationObjects3D& obs, std::size_t k,
                                  const mrpt::poses::CPose2D& odometry_pose) {
     const Eigen::Vector3d& p = obs.boxInRobot(k).center;
-    const double c = std::cos(odometry_pose.phi()), s = std::sin(odometry_pose.phi());
-    return {odometry_pose.x() + c * p.x() - s * p.y(), odometry_pose.y() + s * p.x() + c * p.y()};
+    Eigen::Vector2d out;
+    odometry_pose.composePoint(p.x(), p.y(), out.x(), out.y());
+    return out;
 }
 
 }  // namespace

@@ -28,10 +28,10 @@ void FitWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationOb
     for (std::size_t k = 0; k < obs->size(); ++k) {
         const int cls = map.usableClassOf(*obs, k);
         if (cls < 0 || (weights && k < weights->size() && (*weights)[k] == 0.0)) continue;
-        const auto c = obs->boxInRobot(k).center;
-        const double co = std::cos(odometry_pose.phi()), so = std::sin(odometry_pose.phi());
-        m_items.push_back({obs, k, odometry_pose, t_s, cls, odometry_pose.x() + co * c.x() - so * c.y(),
-                           odometry_pose.y() + so * c.x() + co * c.y()});
+        const auto& c = obs->boxInRobot(k).center;
+        double x = 0, y = 0;  // the centre in the odometry frame
+        odometry_pose.composePoint(c.x(), c.y(), x, y);
+        m_items.push_back({obs, k, odometry_pose, t_s, cls, x, y});
         if (m_items.size() > m_params.fit_window) m_items.pop_front();
     }
 }
