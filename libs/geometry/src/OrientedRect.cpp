@@ -112,12 +112,13 @@ double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double 
     const double ex = std::abs(ux) + std::abs(vx), ey = std::abs(uy) + std::abs(vy);
     const double cx = a.center.x(), cy = a.center.y();
     const double x0 = cx - ex, x1 = cx + ex, y0 = cy - ey, y1 = cy + ey;
-    // Separating axes: the aligned rectangle's (the bounds: the cheapest, tried first), then all four.
+    // Separating axes: the aligned rectangle's are the bounds (the cheapest, tried first); then a's
+    // two, where the aligned rectangle's extent is hx |c| + hy |s| along a's x axis (as separated()
+    // computes it for an unrotated second rectangle, without the two axes the bounds tested).
     if (x0 >= hx || x1 <= -hx || y0 >= hy || y1 <= -hy) return 0.0;
-    OrientedRect aligned;
-    aligned.hx = hx;
-    aligned.hy = hy;
-    if (separated(a, aligned)) return 0.0;
+    const double ac = std::abs(a.c), as = std::abs(a.s);
+    if (std::abs(a.c * cx + a.s * cy) >= a.hx + hx * ac + hy * as) return 0.0;
+    if (std::abs(a.c * cy - a.s * cx) >= a.hy + hx * as + hy * ac) return 0.0;
     ClipBuffer buf1, buf2;
     buf1.n = 4;
     buf1.x[0] = cx - ux - vx;
