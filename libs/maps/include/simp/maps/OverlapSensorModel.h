@@ -8,9 +8,9 @@
 #include <simp/geometry/ConvexPolygon.h>
 #include <simp/maps/FootprintOverlap.h>
 #include <simp/maps/IouScore.h>
-#include <simp/maps/TableLog.h>
 #include <simp/maps/MapFootprints.h>
 #include <simp/maps/PreparedDetection.h>
+#include <simp/maps/TableLog.h>
 #include <simp/world/ObjectMapData.h>
 
 #include <algorithm>
