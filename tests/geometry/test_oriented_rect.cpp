@@ -1,4 +1,4 @@
-/// Tests of simp/geometry/OrientedRect.h: the rectangle clip and the separating-axis test
+/// Tests of simp/geometry/OrientedRect.h: the rectangle's intersection area and the separating-axis test
 /// must agree with the generic convex clipping of ConvexPolygon.h (intersectionArea) up to
 /// rounding, on hand-made edge cases and on many random pairs.
 #include <simp/geometry/ConvexPolygon.h>
@@ -143,6 +143,27 @@ TEST(OrientedRect, HandMadeCases) {
     EXPECT_TRUE(separated(a, b));
     EXPECT_TRUE(separated(b, a));
     EXPECT_LE(intersectionArea(a.polygon(), b.polygon()), 1e-15);
+}
+
+/// The rectangle overload turns `a` into the first quadrant and clips a box within ~0.01 rad of the
+/// axes: exact quarter turns (cos or sin exactly 0, where 1/cos or 1/sin is infinite), tiny angles,
+/// angles about that threshold, and every quadrant, against the generic clipping.
+TEST(OrientedRect, QuarterTurnsAndNearlyAlignedBoxesAgreeWithGenericClipping) {
+    const double hx = 1.2, hy = 0.7;
+    const OrientedRect aligned = rect(0, 0, 0, 2 * hx, 2 * hy);
+    for (const double base : {0.0, M_PI / 2, M_PI, -M_PI / 2})
+        for (const double tiny : {0.0, 1e-14, -1e-13, 1e-10, -1e-6, 0.0099, 0.0101, -0.0101, 0.02, 0.3})
+            for (const Eigen::Vector2d& c : {Eigen::Vector2d(0.4, -0.3), Eigen::Vector2d(1.5, 0.2), Eigen::Vector2d(-0.2, 0.9)}) {
+                OrientedRect a = rect(c.x(), c.y(), base + tiny, 1.6, 0.5);
+                if (tiny == 0.0) {  // exact quarter turns, as a sensor model's rotation can give them
+                    const int k = static_cast<int>(std::lround(base / (M_PI / 2)));
+                    a.c = k == 0 ? 1.0 : (k == 2 ? -1.0 : 0.0);
+                    a.s = k == 1 ? 1.0 : (k == -1 ? -1.0 : 0.0);
+                }
+                const double generic = intersectionArea(a.polygon(), aligned.polygon());
+                EXPECT_NEAR(intersectionAreaWithAlignedRect(a, hx, hy), generic, kRel * aligned.area())
+                    << "turn " << base << " + " << tiny << " at " << c.transpose();
+            }
 }
 
 /// Random pairs in the sensor model's range (world coordinates up to 20 m, sides 0.05 to

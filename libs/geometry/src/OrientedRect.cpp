@@ -106,6 +106,56 @@ double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double
     return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
 }
 
+namespace {
+
+/// Length of [lo, hi] (0 when empty).
+inline double span(double lo, double hi) { return std::max(0.0, hi - lo); }
+
+/// Area of a (centre (cx, cy), unit x axis (c, s) with c > 0, s > 0, half sides ax, ay) and
+/// [-hx, hx] x [-hy, hy], by Green's theorem: the area is the integral of x dy counter-clockwise
+/// around the intersection, whose boundary is the part of each rectangle's boundary inside the
+/// other. The aligned rectangle's horizontal edges add nothing (dy = 0); its vertical ones add
+/// hx times the length of a's cross-section at x = +-hx. Each of a's edges, as the centre of the
+/// edge plus tau times its unit direction, is cut to the tau interval inside the aligned one:
+/// four products with 1/c and 1/s and min / max, no branch on where the vertices fall (the
+/// clipping's branches cost mispredictions in the sensor model's loop). Both sides of an edge
+/// are equal for the pairs of parallel edges, so each pair shares its work.
+double alignedIntersectionByGreen(double cx, double cy, double c, double s, double ax, double ay, double hx,
+                                  double hy) {
+    const double rc = 1.0 / c, rs = 1.0 / s;
+    const double ux = c * ax, uy = s * ax, vx = -s * ay, vy = c * ay;  // half axes
+    double twice_area = 0.0;
+    // Edges along (c, s), centred at centre -+ v (the first traversed along, the second against it).
+    for (const double sign : {-1.0, 1.0}) {
+        const double mx = cx + sign * vx, my = cy + sign * vy;
+        const double lo = std::max({-ax, (-hx - mx) * rc, (-hy - my) * rs});
+        const double hi = std::min({ax, (hx - mx) * rc, (hy - my) * rs});
+        // integral of x dy along (c, s) over [lo, hi]: s (hi - lo) (mx + c (lo + hi) / 2)
+        twice_area -= sign * s * span(lo, hi) * (2.0 * mx + c * (lo + hi));
+    }
+    // Edges along (-s, c), centred at centre +- u (the first traversed along, the second against it).
+    for (const double sign : {1.0, -1.0}) {
+        const double mx = cx + sign * ux, my = cy + sign * uy;
+        const double lo = std::max({-ay, (mx - hx) * rs, (-hy - my) * rc});
+        const double hi = std::min({ay, (mx + hx) * rs, (hy - my) * rc});
+        // integral of x dy along (-s, c) over [lo, hi]: c (hi - lo) (mx - s (lo + hi) / 2)
+        twice_area += sign * c * span(lo, hi) * (2.0 * mx - s * (lo + hi));
+    }
+    // The aligned rectangle's vertical edges: a's cross-section at x = X is y - cy within both slabs
+    // |c dX + s w| <= ax and |-s dX + c w| <= ay (dX = X - cx, w = y - cy).
+    const double half1 = ax * rs, half2 = ay * rc;
+    for (const double x : {-hx, hx}) {
+        const double dx = x - cx;
+        const double mid1 = cy - c * dx * rs, mid2 = cy + s * dx * rc;
+        const double lo = std::max({-hy, mid1 - half1, mid2 - half2});
+        const double hi = std::min({hy, mid1 + half1, mid2 + half2});
+        twice_area += 2.0 * hx * span(lo, hi);
+    }
+    return 0.5 * twice_area;
+}
+
+}  // namespace
+
 double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double hy) {
     // a's half axes; its bounds follow from them without visiting the vertices.
     const double ux = a.c * a.hx, uy = a.s * a.hx, vx = -a.s * a.hy, vy = a.c * a.hy;
@@ -119,17 +169,33 @@ double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double 
     const double ac = std::abs(a.c), as = std::abs(a.s);
     if (std::abs(a.c * cx + a.s * cy) >= a.hx + hx * ac + hy * as) return 0.0;
     if (std::abs(a.c * cy - a.s * cx) >= a.hy + hx * as + hy * ac) return 0.0;
-    ClipBuffer buf1, buf2;
-    buf1.n = 4;
-    buf1.x[0] = cx - ux - vx;
-    buf1.y[0] = cy - uy - vy;
-    buf1.x[1] = cx + ux - vx;
-    buf1.y[1] = cy + uy - vy;
-    buf1.x[2] = cx + ux + vx;
-    buf1.y[2] = cy + uy + vy;
-    buf1.x[3] = cx - ux + vx;
-    buf1.y[3] = cy - uy + vy;
-    return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
+    // The same rectangle with its x axis in the first quadrant (turned by a multiple of pi / 2,
+    // the half sides swapped for an odd one): c > 0, s >= 0.
+    double c = a.c, s = a.s, ax = a.hx, ay = a.hy;
+    if (c < 0.0) c = -c, s = -s;
+    if (s < 0.0) {
+        const double t = c;
+        c = -s, s = t;
+        std::swap(ax, ay);
+    }
+    // Green's theorem divides by c and s: where the box is within ~0.01 rad of the axes (about 1 %
+    // of a sensor model's pairs), the crossings of its nearly axis-parallel edges would be off by
+    // rounding / sin, so it is clipped.
+    constexpr double kMinSinCos = 0.01;
+    if (std::min(c, s) < kMinSinCos) {
+        ClipBuffer buf1, buf2;
+        buf1.n = 4;
+        buf1.x[0] = cx - ux - vx;
+        buf1.y[0] = cy - uy - vy;
+        buf1.x[1] = cx + ux - vx;
+        buf1.y[1] = cy + uy - vy;
+        buf1.x[2] = cx + ux + vx;
+        buf1.y[2] = cy + uy + vy;
+        buf1.x[3] = cx - ux + vx;
+        buf1.y[3] = cy - uy + vy;
+        return clipToAlignedRect(&buf1, &buf2, x0, x1, y0, y1, hx, hy);
+    }
+    return alignedIntersectionByGreen(cx, cy, c, s, ax, ay, hx, hy);
 }
 
 }  // namespace simp::geometry

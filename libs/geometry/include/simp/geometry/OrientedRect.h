@@ -1,7 +1,7 @@
 #pragma once
 /// \file OrientedRect.h
 /// Rectangles in the plane (the footprints of upright boxes: most map objects) and the
-/// exact intersection area of a convex polygon with one, clipped in the rectangle's own
+/// exact intersection area of a convex polygon with one, computed in the rectangle's own
 /// frame, where each of its four edges is one coordinate compare. This is the fast path of
 /// the sensor model's IoU (Eq. iouscore); it equals intersectionArea() up to rounding.
 
@@ -43,7 +43,9 @@ double intersectionAreaWithAlignedRect(const ConvexPolygon& p, double hx, double
 
 /// The same for a rectangle `a` given in that frame (the sensor model's common case: an
 /// upright detection box against an upright map box). The four separating axes are tested
-/// first, from a's centre and axes alone, so disjoint pairs cost no vertex.
+/// first, from a's centre and axes alone, so disjoint pairs cost no vertex; an overlapping pair
+/// is integrated along both boundaries (Green's theorem) without branches on where a's vertices
+/// fall; an `a` within ~0.01 rad of the axes (where that is ill-conditioned) is clipped.
 double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double hy);
 
 /// True when a separating axis exists (one of the four side normals): the interiors are
