@@ -117,9 +117,8 @@ inline double span(double lo, double hi) { return std::max(0.0, hi - lo); }
 /// other. The aligned rectangle's horizontal edges add nothing (dy = 0); its vertical ones add
 /// hx times the length of a's cross-section at x = +-hx. Each of a's edges, as the centre of the
 /// edge plus tau times its unit direction, is cut to the tau interval inside the aligned one:
-/// four products with 1/c and 1/s and min / max, no branch on where the vertices fall (the
-/// clipping's branches cost mispredictions in the sensor model's loop). Both sides of an edge
-/// are equal for the pairs of parallel edges, so each pair shares its work.
+/// products with 1/c and 1/s (shared by all four edges) and min / max: no branch on where the
+/// vertices fall (the clipping's branches cost mispredictions in the sensor model's loop).
 double alignedIntersectionByGreen(double cx, double cy, double c, double s, double ax, double ay, double hx,
                                   double hy) {
     const double rc = 1.0 / c, rs = 1.0 / s;
