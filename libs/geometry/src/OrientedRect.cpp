@@ -177,9 +177,10 @@ double intersectionAreaWithAlignedRect(const OrientedRect& a, double hx, double 
         c = -s, s = t;
         std::swap(ax, ay);
     }
-    // Green's theorem divides by c and s: where the box is within ~0.01 rad of the axes (about 1 %
-    // of a sensor model's pairs), the crossings of its nearly axis-parallel edges would be off by
-    // rounding / sin, so it is clipped.
+    // Green's theorem divides by c and s: where the box is within ~0.01 rad of the axes (4-6 % of
+    // the overlapping pairs of a localization run, measured: a detection is turned about as its
+    // object), the crossings of its nearly axis-parallel edges would be off by rounding / sin, so
+    // it is clipped.
     constexpr double kMinSinCos = 0.01;
     if (std::min(c, s) < kMinSinCos) {
         ClipBuffer buf1, buf2;
