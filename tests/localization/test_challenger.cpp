@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -160,4 +161,31 @@ TEST(Challenger, SearchingThePlacesOfTheWindowFindsTheNewPlaceAndOnlyUnambiguous
     std::printf("kidnap: localized again after %.1f s with the search, %.1f s without\n", searched.localized_after,
                 plain.localized_after);
     EXPECT_TRUE(plain.localized_after < 0 || plain.localized_after > searched.localized_after);
+}
+
+TEST(Challenger, TakesOverOnlyWithItsMarginAtTheSamePlaceToo) {
+    ChallengerParams c;  // win_margin 3, replace_max_fit 0.1, min_objects 4, scan_veto_nats 1
+    std::size_t asked = 0;
+    const auto fit = [&](double f) { return [&asked, f] { ++asked; return f; }; };
+    const auto objects = [&](std::size_t n) { return [&asked, n] { ++asked; return n; }; };
+    const auto scans = [&](std::optional<double> s) { return [&asked, s] { ++asked; return s; }; };
+    // The same place: the lead decides, and nothing else is scored.
+    EXPECT_FALSE(challengerTakesOver(c, true, 0.0, fit(0.9), objects(0), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, true, 2.9, fit(0.9), objects(0), scans(std::nullopt)));
+    EXPECT_TRUE(challengerTakesOver(c, true, 3.0, fit(0.9), objects(0), scans(-50.0)));
+    EXPECT_EQ(asked, 0u);
+    EXPECT_FALSE(challengerTakesOver(c, true, std::nan(""), fit(0.0), objects(9), scans(std::nullopt)));
+    // Elsewhere: the lead, then the current estimate's fit, the objects explained, the scans.
+    EXPECT_FALSE(challengerTakesOver(c, false, 2.9, fit(0.0), objects(9), scans(std::nullopt)));
+    EXPECT_EQ(asked, 0u);
+    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(0.1), objects(4), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.11), objects(9), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(3), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-1.01)));
+    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-0.99)));
+    c.replace_max_fit = 1.0;
+    c.min_objects = 0;
+    asked = 0;
+    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(1.0), objects(0), scans(std::nullopt)));
+    EXPECT_EQ(asked, 1u);  // only the scans: the other tests are off
 }

@@ -108,7 +108,7 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
         io::OptionTable<O>("Challenger")
             .flag("enabled", &O::enabled, "a second particle set searches globally while lost")
             .number("win_margin", &O::win_margin, "nats", ValueRange::nonNegative(), "it replaces the current set when it explains the window better by this")
-            .number("agree_distance_m", &O::agree_distance_m, "m", ValueRange::nonNegative(), "... or is localized this close to the current estimate")
+            .number("agree_distance_m", &O::agree_distance_m, "m", ValueRange::nonNegative(), "closer to the current estimate than this: the same place (no distinct-place tests)")
             .number("reset_fraction", &O::reset_fraction, "", ValueRange::fraction(), "of its particles reset from the detections per update")
             .flag("reset_by_fit", &O::reset_by_fit, "reset_fraction x the share of the window its estimate leaves unexplained")
             .flag("hypothesis_search", &O::hypothesis_search, "until localized: reset about the places that explain the detections since lost best; localized only when no other place explains them as well")

@@ -492,27 +492,25 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
         return false;
     }
     if (ch.monitor.state() != LocalizationState::Localized) return false;
-    // Both estimates scored on the detections since `lost` (the fit window, each detection at the
-    // pose of its own frame). Near the current estimate it is the same place: it takes over when it
-    // explains them at least as well (it passes the tests the current set fails now); elsewhere it
-    // must explain them better by win_margin.
+    // Both estimates scored on the detections since `lost` (each detection at the pose of its own
+    // frame). The same place is the same position and heading: a challenger turned by more than the
+    // search's distinct_heading_rad is elsewhere (a right position with a wrong heading drifts off).
     std::vector<double> log_lik;
     m_since_lost.scorePoses(*m_map, {now.asTPose(), ch_now.asTPose()}, m_odometry, log_lik);
-    // The same place is the same position and heading: a challenger turned by more than the
-    // search's distinct_heading_rad is elsewhere (a right position with a wrong heading drifts off).
-    const bool near = samePlace(ch_now.asTPose(), now.asTPose(), c.agree_distance_m, m_opts.search.distinct_heading_rad);
     ch.lead = log_lik[1] - log_lik[0];
-    if (ch.lead < (near ? 0.0 : c.win_margin)) return false;
-    if (!near && c.replace_max_fit < 1.0 &&
-        m_since_lost.evaluate(*m_map, now, m_odometry, t_s).fraction > c.replace_max_fit)
-        return false;
-    if (!near && c.min_objects > 0 && m_since_lost.explainedObjects(*m_map, ch_now, m_odometry, c.object_radius_m) < c.min_objects)
-        return false;
-    if (!near && m_scan_model && m_scans_since_lost.size() > 0) {  // the LiDAR's say on the way since `lost`
+    const bool same_place =
+        samePlace(ch_now.asTPose(), now.asTPose(), c.agree_distance_m, m_opts.search.distinct_heading_rad);
+    const auto current_fit = [&] { return m_since_lost.evaluate(*m_map, now, m_odometry, t_s).fraction; };
+    const auto explained_objects = [&] {
+        return m_since_lost.explainedObjects(*m_map, ch_now, m_odometry, c.object_radius_m);
+    };
+    const auto scan_lead = [&]() -> std::optional<double> {  // the LiDAR's say on the way since `lost`
+        if (!m_scan_model || m_scans_since_lost.size() == 0) return std::nullopt;
         std::vector<double> scan_log;
         m_scans_since_lost.score(*m_scan_model, {now.asTPose(), ch_now.asTPose()}, m_odometry, scan_log);
-        if (scan_log[1] - scan_log[0] < -c.scan_veto_nats) return false;
-    }
+        return scan_log[1] - scan_log[0];
+    };
+    if (!challengerTakesOver(c, same_place, ch.lead, current_fit, explained_objects, scan_lead)) return false;
     m_mcl = std::move(ch.mcl);
     m_summary = ch.summary;
     m_monitor = ch.monitor;

@@ -45,10 +45,11 @@ struct SensorResettingParams {
 /// turns `lost`, a second particle set starts a global search (uniform over the free space, as at
 /// the start, `reset_fraction` of it reset from the detections at each update) beside the current
 /// one. Both are updated with the same odometry and detections. The challenger replaces the current
-/// set when its own state is `localized` and it is either within `agree_distance_m` of the current
-/// estimate and turned by at most the search's `distinct_heading_rad` (samePlace: the same place,
-/// better told) or explains the detections seen since `lost` (the fit
-/// window) better than the current estimate by `win_margin` nats. It is dropped when the current set
+/// set when its own state is `localized`, it explains the detections seen since `lost` (the fit
+/// window) better than the current estimate by `win_margin` nats, and it is either within
+/// `agree_distance_m` of the current estimate and turned by at most the search's
+/// `distinct_heading_rad` (samePlace: the same place, better told) or passes the tests of a distinct
+/// place (`replace_max_fit`, `min_objects`, the LiDAR veto). It is dropped when the current set
 /// is `localized` again (the `lost` was false). A false `lost` thus costs CPU, never the track (a
 /// restart on `lost` lost 9 of 16 tracking runs, doc/results-localization.md).
 struct ChallengerParams {
@@ -89,6 +90,25 @@ struct ChallengerParams {
     std::size_t scan_window = 20;
     double scan_veto_nats = 1.0;
 };
+
+/// Whether a `localized` challenger replaces the current set. `lead`: its log-likelihood of the
+/// detections since `lost` minus the current estimate's. It must lead by win_margin at the same place
+/// too (a few nats there are the window's noise; the current set carries the longer track).
+/// Elsewhere the current estimate must explain at most replace_max_fit of the window, the
+/// challenger's at least min_objects objects, and the scans since `lost` (std::nullopt: none) must
+/// not prefer the current estimate by more than scan_veto_nats. The rest is asked only when needed
+/// (each scores the window): current_fit() -> double, explained_objects() -> std::size_t,
+/// scan_lead() -> std::optional<double>.
+template <class CurrentFit, class ExplainedObjects, class ScanLead>
+bool challengerTakesOver(const ChallengerParams& c, bool same_place, double lead, CurrentFit current_fit,
+                         ExplainedObjects explained_objects, ScanLead scan_lead) {
+    if (!(lead >= c.win_margin)) return false;
+    if (same_place) return true;
+    if (c.replace_max_fit < 1.0 && current_fit() > c.replace_max_fit) return false;
+    if (c.min_objects > 0 && explained_objects() < c.min_objects) return false;
+    const std::optional<double> scans = scan_lead();
+    return !(scans && *scans < -c.scan_veto_nats);
+}
 
 /// Everything the localizer reads from the .ini.
 struct LocalizerOptions {
