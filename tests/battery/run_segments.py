@@ -2,10 +2,12 @@
 """Where one localization run leaves the bounds (doc/results-localization.md, how failures are read).
 Reads RUN/steps.csv and SEQ/groundtruth.tum; from the first `localized` step on (where estimate.tum
 starts), lists each stretch whose reported estimate is outside 0.3 m / pi/4 rad: its times, length,
-largest error, the states and detections per step in it, and how it began: the largest one-step move
-of the estimate against the truth's ("jump": the reported cluster changed, e.g. a minority of the set
-won an update; "slide": the set moved over several updates). Ends with the time outside in all, the
-quantity simp-eval traj compares with max_outside_s. Standard library only.
+largest error, the states and detections per step in it, and its largest one-step move of the
+estimate against the truth's, with that step's detections and whether it updated (a move near the
+stretch's error is a jump: the reported cluster changed, e.g. a minority of the set won an update; a
+small one, a slide over several updates). Ends with the time outside in all (from the first
+`localized` step; simp-eval traj counts it from the converging estimate on and compares it with
+max_outside_s). Standard library only.
 Usage: run_segments.py RUN SEQ"""
 import csv, math, os, sys
 
