@@ -12,7 +12,7 @@ Usage: run_segments.py RUN SEQ"""
 import csv, math, os, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from analyze_runs import interp, read_tum  # noqa: E402
+from analyze_runs import err, interp, read_tum  # noqa: E402
 
 MAX_TRANS_M, MAX_ROT_RAD = 0.3, math.pi / 4
 
@@ -33,8 +33,7 @@ def main():
         if not started or g is None:
             continue
         x, y, phi = float(r['est_x_m']), float(r['est_y_m']), float(r['est_phi_rad'])
-        e_xy = math.hypot(x - g[0], y - g[1])
-        e_phi = abs(math.atan2(math.sin(phi - g[2]), math.cos(phi - g[2])))
+        e_xy, e_phi = err(gt, t, x, y, phi)
         # The estimate's move over the step less the truth's: what the filter did, not the robot.
         move = 0.0
         if prev is not None:
