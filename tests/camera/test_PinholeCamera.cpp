@@ -67,3 +67,19 @@ TEST(BoxProjection, TruncationOfABoxHalfOutsideTheImage) {
     EXPECT_NEAR(p.truncation, 0.5, 1e-3);
     EXPECT_DOUBLE_EQ(p.bbox_trunc(0), 0.0);
 }
+
+TEST(PinholeCamera, AnImageTakesItsOwnIntrinsicsElseTheFallbackAtItsSize) {
+    const auto fallback = makeIntrinsics(0, 0, 380, 379, 324, 237);
+    const auto own = imageIntrinsics(makeIntrinsics(640, 480, 500, 501, 300, 200), 800, 600, fallback);
+    EXPECT_EQ(own.ncols, 800u);
+    EXPECT_EQ(own.nrows, 600u);
+    EXPECT_DOUBLE_EQ(own.fx(), 500);
+    EXPECT_DOUBLE_EQ(own.fy(), 501);
+    EXPECT_DOUBLE_EQ(own.cx(), 300);
+    EXPECT_DOUBLE_EQ(own.cy(), 200);
+    const auto none = imageIntrinsics(std::nullopt, 320, 240, fallback);
+    EXPECT_EQ(none.ncols, 320u);
+    EXPECT_EQ(none.nrows, 240u);
+    EXPECT_DOUBLE_EQ(none.fx(), 380);
+    EXPECT_DOUBLE_EQ(none.cy(), 237);
+}

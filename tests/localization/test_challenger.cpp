@@ -169,23 +169,50 @@ TEST(Challenger, TakesOverOnlyWithItsMarginAtTheSamePlaceToo) {
     const auto fit = [&](double f) { return [&asked, f] { ++asked; return f; }; };
     const auto objects = [&](std::size_t n) { return [&asked, n] { ++asked; return n; }; };
     const auto scans = [&](std::optional<double> s) { return [&asked, s] { ++asked; return s; }; };
+    const auto views = [&](std::size_t expected, std::size_t seen) {
+        return [&asked, expected, seen] { ++asked; return ViewWindow::Recall{expected, seen}; };
+    };
     // The same place: the lead decides, and nothing else is scored.
-    EXPECT_FALSE(challengerTakesOver(c, true, 0.0, fit(0.9), objects(0), scans(std::nullopt)));
-    EXPECT_FALSE(challengerTakesOver(c, true, 2.9, fit(0.9), objects(0), scans(std::nullopt)));
-    EXPECT_TRUE(challengerTakesOver(c, true, 3.0, fit(0.9), objects(0), scans(-50.0)));
+    EXPECT_FALSE(challengerTakesOver(c, true, 0.0, fit(0.9), objects(0), scans(std::nullopt), views(0, 0)));
+    EXPECT_FALSE(challengerTakesOver(c, true, 2.9, fit(0.9), objects(0), scans(std::nullopt), views(0, 0)));
+    EXPECT_TRUE(challengerTakesOver(c, true, 3.0, fit(0.9), objects(0), scans(-50.0), views(0, 0)));
     EXPECT_EQ(asked, 0u);
-    EXPECT_FALSE(challengerTakesOver(c, true, std::nan(""), fit(0.0), objects(9), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, true, std::nan(""), fit(0.0), objects(9), scans(std::nullopt), views(0, 0)));
     // Elsewhere: the lead, then the current estimate's fit, the objects explained, the scans.
-    EXPECT_FALSE(challengerTakesOver(c, false, 2.9, fit(0.0), objects(9), scans(std::nullopt)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 2.9, fit(0.0), objects(9), scans(std::nullopt), views(0, 0)));
     EXPECT_EQ(asked, 0u);
-    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(0.1), objects(4), scans(std::nullopt)));
-    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.11), objects(9), scans(std::nullopt)));
-    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(3), scans(std::nullopt)));
-    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-1.01)));
-    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-0.99)));
+    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(0.1), objects(4), scans(std::nullopt), views(0, 0)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.11), objects(9), scans(std::nullopt), views(0, 0)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(3), scans(std::nullopt), views(0, 0)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-1.01), views(0, 0)));
+    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit(0.0), objects(9), scans(-0.99), views(0, 0)));
     c.replace_max_fit = 1.0;
     c.min_objects = 0;
+    c.min_view_recall = 0.0;
     asked = 0;
-    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(1.0), objects(0), scans(std::nullopt)));
+    EXPECT_TRUE(challengerTakesOver(c, false, 3.0, fit(1.0), objects(0), scans(std::nullopt), views(0, 0)));
     EXPECT_EQ(asked, 1u);  // only the scans: the other tests are off
+}
+
+TEST(Challenger, ElsewhereNeedsTheFramesSinceLostToHaveShownItsPlace) {
+    ChallengerParams c;  // min_view_recall 0.1 once 30 views were expected
+    std::size_t asked = 0;
+    const auto fit = [] { return 0.0; };
+    const auto objects = [] { return std::size_t{9}; };
+    const auto scans = [] { return std::optional<double>{}; };
+    const auto views = [&](std::size_t expected, std::size_t seen) {
+        return [&asked, expected, seen] { ++asked; return ViewWindow::Recall{expected, seen}; };
+    };
+    // A place whose map objects in view the robot did not see: refused.
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit, objects, scans, views(68, 0)));
+    EXPECT_FALSE(challengerTakesOver(c, false, 30.0, fit, objects, scans, views(40, 3)));
+    // It showed a tenth of them, or too few were expected to judge: the place stands.
+    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit, objects, scans, views(40, 4)));
+    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit, objects, scans, views(29, 0)));
+    EXPECT_EQ(asked, 4u);
+    // The same place is never judged on it; 0 turns it off.
+    EXPECT_TRUE(challengerTakesOver(c, true, 30.0, fit, objects, scans, views(68, 0)));
+    c.min_view_recall = 0.0;
+    EXPECT_TRUE(challengerTakesOver(c, false, 30.0, fit, objects, scans, views(68, 0)));
+    EXPECT_EQ(asked, 4u);
 }

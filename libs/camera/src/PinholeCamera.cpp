@@ -12,6 +12,12 @@ mrpt::img::TCamera makeIntrinsics(int width_px, int height_px, double fx, double
 
 mrpt::img::TCamera defaultIntrinsics() { return makeIntrinsics(640, 480, 380.07, 379.66, 324.47, 237.79); }
 
+mrpt::img::TCamera imageIntrinsics(const std::optional<mrpt::img::TCamera>& given, int width_px, int height_px,
+                                   const mrpt::img::TCamera& fallback) {
+    const mrpt::img::TCamera& K = given ? *given : fallback;
+    return makeIntrinsics(width_px, height_px, K.fx(), K.fy(), K.cx(), K.cy());
+}
+
 Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& p) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
     T.linear() = p.getRotationMatrix().asEigen();

@@ -119,7 +119,11 @@ const io::OptionTable<ChallengerParams>& challengerParamsTable() {
             .integer("min_objects", &O::min_objects, ValueRange::between(0, 1000), "... and only when its estimate explains detections of at least this many distinct objects of the window (0: no such condition)")
             .number("object_radius_m", &O::object_radius_m, "m", ValueRange::positive(), "detections of one class this close (odometry frame) are one object for min_objects")
             .integer("scan_window", &O::scan_window, ValueRange::between(0, 10000), "simp+lidar: the scans since `lost` scored at both estimates (0: no scan veto)")
-            .number("scan_veto_nats", &O::scan_veto_nats, "nats", ValueRange::between(0, 1e6), "a challenger elsewhere does not take over when those scans prefer the current estimate by more than this (the scan model's weighted log-likelihood)");
+            .number("scan_veto_nats", &O::scan_veto_nats, "nats", ValueRange::between(0, 1e6), "a challenger elsewhere does not take over when those scans prefer the current estimate by more than this (the scan model's weighted log-likelihood)")
+            .number("min_view_recall", &O::min_view_recall, "", ValueRange::fraction(), "... nor when the camera frames since lost, at its estimate, showed less than this share of the map objects they should have shown (0: off)")
+            .integer("view_min_expected", &O::view_min_expected, ValueRange::between(0, 1e9), "... once they should have shown this many (views: one object in one frame)")
+            .number("view_max_range_m", [](auto& o) -> auto& { return o.views.max_range_m; }, "m", ValueRange::positive(), "an object is expected within the range its class was detected at so far in the run, and not farther than this")
+            .number("view_seen_radius_m", [](auto& o) -> auto& { return o.views.seen_radius_m; }, "m", ValueRange::positive(), "a detection of its class this close shows an expected object");
     return t;
 }
 

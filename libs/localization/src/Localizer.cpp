@@ -166,7 +166,8 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_fit(options.state),
       m_since_lost(challengerWindow(options)),
       m_monitor(options.state),
-      m_scans_since_lost(options.challenger.scan_window) {
+      m_scans_since_lost(options.challenger.scan_window),
+      m_views_since_lost(options.challenger.views, floorplan) {
     m_pf.m_options = m_opts.pf;
 }
 
@@ -359,10 +360,14 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
     for (auto& o : observations) {
         o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
         m_fit.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
-        if (m_opts.challenger.enabled) m_since_lost.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
+        if (m_opts.challenger.enabled) {
+            m_since_lost.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
+            if (m_opts.challenger.min_view_recall > 0) m_views_since_lost.add(*m_map, o.obs, m_odometry, t_s);
+        }
     }
 
     StepRecord rec;
+    m_views_asked.reset();
     rec.t_s = t_s;
     const auto& e = m_opts.experiment;
     // Motion trigger (paper: d_xy, d_theta): the first frame, then after enough motion.
@@ -452,6 +457,10 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         rec.challenger_fit = m_challenger->fit;
         rec.challenger_lead = m_challenger->lead;
     }
+    if (m_views_asked) {
+        rec.challenger_views_expected = static_cast<long>(m_views_asked->expected);
+        rec.challenger_views_seen = static_cast<long>(m_views_asked->seen);
+    }
     rec.state = m_monitor.state();
     return rec;
 }
@@ -470,6 +479,7 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
     if (!m_challenger) {
         if (before != LocalizationState::Lost) {  // updated from the next update on
             m_scans_since_lost.clear();
+            m_views_since_lost.clear();
             start();
         }
         return false;
@@ -510,7 +520,12 @@ bool Localizer::challenge(double t_s, const mrpt::poses::CPose2D& now, bool had_
         m_scans_since_lost.score(*m_scan_model, {now.asTPose(), ch_now.asTPose()}, m_odometry, scan_log);
         return scan_log[1] - scan_log[0];
     };
-    if (!challengerTakesOver(c, same_place, ch.lead, current_fit, explained_objects, scan_lead)) return false;
+    const auto view_recall = [&] {  // what the camera frames since `lost` should have shown there
+        m_views_asked = m_views_since_lost.recallAt(*m_map, ch_now, m_odometry, t_s);
+        return *m_views_asked;
+    };
+    if (!challengerTakesOver(c, same_place, ch.lead, current_fit, explained_objects, scan_lead, view_recall))
+        return false;
     m_mcl = std::move(ch.mcl);
     m_summary = ch.summary;
     m_monitor = ch.monitor;

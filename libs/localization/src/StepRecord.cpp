@@ -11,7 +11,8 @@ std::string stepsCsvHeader() {
     return "time_s,est_x_m,est_y_m,est_phi_rad,mean_x_m,mean_y_m,mean_phi_rad,cov_xx,cov_xy,cov_yy,cov_xphi,"
            "cov_yphi,cov_phiphi,cluster_weight,particles,ess,detections,updated,pruned,seconds,state,fit,"
            "fit_detections,est_std_xy_m,est_std_phi_rad,injected,rival_nats,challenger_particles,local_gain_nats,local_offset_m,"
-           "challenger_x_m,challenger_y_m,challenger_phi_rad,challenger_state,challenger_fit,challenger_lead_nats,unmapped_objects";
+           "challenger_x_m,challenger_y_m,challenger_phi_rad,challenger_state,challenger_fit,challenger_lead_nats,unmapped_objects,"
+           "challenger_views_expected,challenger_views_seen";
 }
 
 std::string stepsCsvLine(const StepRecord& s) {
@@ -43,7 +44,9 @@ std::string stepsCsvLine(const StepRecord& s) {
     } else {
         out += ",,,,,,";
     }
-    out += "," + std::to_string(s.unmapped_objects) + "\n";
+    out += "," + std::to_string(s.unmapped_objects);
+    const auto count = [](long v) { return v < 0 ? std::string(",") : "," + std::to_string(v); };
+    out += count(s.challenger_views_expected) + count(s.challenger_views_seen) + "\n";
     return out;
 }
 

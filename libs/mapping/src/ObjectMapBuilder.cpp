@@ -219,14 +219,12 @@ Eigen::Vector2d ObjectMapBuilder::classBiasOf(int class_id, const geometry::Box3
 camera::PinholeCamera ObjectMapBuilder::cameraOf(const obs::CObservationObjects3D& obs,
                                                  const mrpt::poses::CPose3D& robot_pose) const {
     // The observation's image size with its intrinsics, or the configured default intrinsics.
-    const auto& K = obs.intrinsics();
+    const auto fallback = camera::makeIntrinsics(0, 0, m_options.default_fx_px, m_options.default_fy_px,
+                                                 m_options.default_cx_px, m_options.default_cy_px);
     return camera::PinholeCamera::onRobot(
         robot_pose, obs.cameraPose(),
-        K.has_value() ? camera::makeIntrinsics(static_cast<int>(obs.imageWidth()), static_cast<int>(obs.imageHeight()),
-                                               K->fx(), K->fy(), K->cx(), K->cy())
-                      : camera::makeIntrinsics(static_cast<int>(obs.imageWidth()), static_cast<int>(obs.imageHeight()),
-                                               m_options.default_fx_px, m_options.default_fy_px,
-                                               m_options.default_cx_px, m_options.default_cy_px));
+        camera::imageIntrinsics(obs.intrinsics(), static_cast<int>(obs.imageWidth()),
+                                static_cast<int>(obs.imageHeight()), fallback));
 }
 
 void ObjectMapBuilder::insert(const obs::CObservationObjects3D& obs, const mrpt::poses::CPose3D& robot_pose) {

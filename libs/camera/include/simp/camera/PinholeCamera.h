@@ -10,6 +10,7 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <Eigen/Geometry>
+#include <optional>
 
 namespace simp::camera {
 
@@ -19,6 +20,11 @@ mrpt::img::TCamera makeIntrinsics(int width_px, int height_px, double fx, double
 /// The default intrinsics everywhere a camera has none: the authors' K for 640 x 480 images
 /// (fx 380.07, fy 379.66, cx 324.47, cy 237.79 px).
 mrpt::img::TCamera defaultIntrinsics();
+
+/// The intrinsics of an image of width_px x height_px: `given`'s fx, fy, cx, cy when there are any
+/// (an observation's own), else `fallback`'s (e.g. a configured default).
+mrpt::img::TCamera imageIntrinsics(const std::optional<mrpt::img::TCamera>& given, int width_px, int height_px,
+                                   const mrpt::img::TCamera& fallback);
 
 /// Rigid transform of an MRPT pose (rotation matrix and translation copied, no re-orthonormalisation).
 Eigen::Isometry3d toIsometry(const mrpt::poses::CPose3D& pose);

@@ -21,6 +21,7 @@
 #include <simp/localization/ScanWindow.h>
 #include <simp/localization/SkippedDetections.h>
 #include <simp/localization/StepRecord.h>
+#include <simp/localization/ViewWindow.h>
 
 #include <limits>
 #include <memory>
@@ -89,6 +90,13 @@ struct ChallengerParams {
     /// tell look-alike places apart; the way since `lost` mostly does. scan_window = 0: no veto.
     std::size_t scan_window = 20;
     double scan_veto_nats = 1.0;
+    /// ... and only when the camera frames since `lost` (ViewWindow), placed at its estimate, showed
+    /// at least min_view_recall of the views of map objects they should have shown, once they should
+    /// have shown view_min_expected (fewer: no such condition). A look-alike place explains the few
+    /// objects the robot saw; it also holds objects in view that the robot never saw. 0: off.
+    double min_view_recall = 0.1;
+    std::size_t view_min_expected = 30;
+    ViewWindowParams views;  ///< which views are expected, and when one is shown
 };
 
 /// Whether a `localized` challenger replaces the current set. `lead`: its log-likelihood of the
@@ -96,18 +104,23 @@ struct ChallengerParams {
 /// too (a few nats there are the window's noise; the current set carries the longer track).
 /// Elsewhere the current estimate must explain at most replace_max_fit of the window, the
 /// challenger's at least min_objects objects, and the scans since `lost` (std::nullopt: none) must
-/// not prefer the current estimate by more than scan_veto_nats. The rest is asked only when needed
-/// (each scores the window): current_fit() -> double, explained_objects() -> std::size_t,
-/// scan_lead() -> std::optional<double>.
-template <class CurrentFit, class ExplainedObjects, class ScanLead>
+/// not prefer the current estimate by more than scan_veto_nats, and the frames since `lost` must have
+/// shown min_view_recall of the map objects they should have shown at its estimate. The rest is asked
+/// only when needed (each scores the window): current_fit() -> double, explained_objects() ->
+/// std::size_t, scan_lead() -> std::optional<double>, view_recall() -> ViewWindow::Recall.
+template <class CurrentFit, class ExplainedObjects, class ScanLead, class ViewRecall>
 bool challengerTakesOver(const ChallengerParams& c, bool same_place, double lead, CurrentFit current_fit,
-                         ExplainedObjects explained_objects, ScanLead scan_lead) {
+                         ExplainedObjects explained_objects, ScanLead scan_lead, ViewRecall view_recall) {
     if (!(lead >= c.win_margin)) return false;
     if (same_place) return true;
     if (c.replace_max_fit < 1.0 && current_fit() > c.replace_max_fit) return false;
     if (c.min_objects > 0 && explained_objects() < c.min_objects) return false;
     const std::optional<double> scans = scan_lead();
-    return !(scans && *scans < -c.scan_veto_nats);
+    if (scans && *scans < -c.scan_veto_nats) return false;
+    if (!(c.min_view_recall > 0)) return true;
+    const ViewWindow::Recall views = view_recall();
+    return views.expected < c.view_min_expected ||
+           static_cast<double>(views.seen) >= c.min_view_recall * static_cast<double>(views.expected);
 }
 
 /// Everything the localizer reads from the .ini.
@@ -232,6 +245,8 @@ class Localizer {
     bool m_use_objects = true;
     mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
     ScanWindow m_scans_since_lost;  ///< [Challenger] scan_window: the scans weighed since `lost`
+    ViewWindow m_views_since_lost;  ///< [Challenger] views: the camera frames since `lost`
+    std::optional<ViewWindow::Recall> m_views_asked;  ///< what the take-over asked of them at this step
 };
 
 /// Bins of kld's sizes (xy in m, phi in rad) that hold at least one particle.

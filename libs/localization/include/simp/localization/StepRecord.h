@@ -45,6 +45,11 @@ struct StepRecord {
     double challenger_fit = std::numeric_limits<double>::quiet_NaN();
     double challenger_lead = std::numeric_limits<double>::quiet_NaN();
     std::size_t unmapped_objects = 0;  ///< tracks DetectionNovelty holds for objects the map does not hold there
+    /// When a challenger elsewhere was judged on the camera frames since `lost` at this frame
+    /// (ViewWindow): the views of map objects they should have shown at its estimate, and how many
+    /// they showed; -1 (written empty) otherwise.
+    long challenger_views_expected = -1;
+    long challenger_views_seen = -1;
     double seconds = 0;              ///< wall time spent on the frame (s)
 };
 

@@ -1,0 +1,84 @@
+#include <simp/camera/PinholeCamera.h>
+#include <simp/localization/ViewWindow.h>
+
+#include <cmath>
+#include <limits>
+
+namespace simp::localization {
+namespace {
+
+camera::PinholeCamera cameraOf(const simp::obs::CObservationObjects3D& obs, const mrpt::math::TPose2D& robot) {
+    return camera::PinholeCamera::onRobot(robot, obs.cameraPose(),
+                                          camera::imageIntrinsics(obs.intrinsics(), static_cast<int>(obs.imageWidth()),
+                                                                  static_cast<int>(obs.imageHeight()),
+                                                                  camera::defaultIntrinsics()));
+}
+
+}  // namespace
+
+ViewWindow::ViewWindow(const ViewWindowParams& params, const mrpt::maps::COccupancyGridMap2D& floorplan)
+    : m_params(params), m_walls(floorplan) {}
+
+void ViewWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationObjects3D::Ptr& obs,
+                     const mrpt::poses::CPose2D& odometry_pose, double t_s) {
+    if (!obs) return;
+    const std::size_t classes = map.data().class_names.size();
+    if (m_min_range_m.size() != classes) {
+        m_min_range_m.assign(classes, std::numeric_limits<double>::infinity());
+        m_max_range_m.assign(classes, 0.0);
+    }
+    const mrpt::poses::CPose3D& cam = obs->cameraPose();
+    for (std::size_t k = 0; k < obs->size(); ++k) {
+        const int c = map.usableClassOf(*obs, k);
+        if (c < 0) continue;
+        const Eigen::Vector3d& p = obs->boxInRobot(k).center;
+        const double r = std::hypot(p.x() - cam.x(), p.y() - cam.y());
+        m_min_range_m[c] = std::min(m_min_range_m[c], r);
+        m_max_range_m[c] = std::max(m_max_range_m[c], r);
+    }
+    m_frames.push_back({obs, odometry_pose, t_s});
+    while (m_frames.size() > m_params.max_frames || (!m_frames.empty() && t_s - m_frames.front().t_s > m_params.max_age_s))
+        m_frames.pop_front();
+}
+
+ViewWindow::Recall ViewWindow::recallAt(const maps::CObjectMap& map, const mrpt::poses::CPose2D& estimate,
+                                        const mrpt::poses::CPose2D& odometry_now, double t_now_s) const {
+    Recall out;
+    const auto& objects = map.data().objects;
+    const double seen_r2 = m_params.seen_radius_m * m_params.seen_radius_m;
+    std::vector<Eigen::Vector2d> shown;  // world centres of the frame's usable detections of one class
+    for (const auto& f : m_frames) {
+        if (t_now_s - f.t_s > m_params.max_age_s) continue;
+        const mrpt::poses::CPose2D robot = estimate + (f.odometry_pose - odometry_now);
+        const camera::PinholeCamera view = cameraOf(*f.obs, robot.asTPose());
+        const Eigen::Isometry3d camera_T_world = view.world_T_camera.inverse();
+        const Eigen::Vector2d eye = view.world_T_camera.translation().head<2>();
+        for (const auto& o : objects) {
+            const int c = o.class_id;
+            if (c < 0 || static_cast<std::size_t>(c) >= m_max_range_m.size() || m_min_range_m[c] > m_max_range_m[c])
+                continue;  // a class the detector has not shown in this run
+            const Eigen::Vector3d& centre = o.box.center;
+            const Eigen::Vector2d to = centre.head<2>() - eye;
+            const double range = to.norm();
+            if (range < m_min_range_m[c] || range > std::min(m_max_range_m[c], m_params.max_range_m)) continue;
+            const Eigen::Vector3d in_camera = camera_T_world * centre;
+            if (in_camera.z() <= 0 || !view.inImage(view.project(in_camera))) continue;
+            if (range > m_params.wall_margin_m &&
+                std::isfinite(m_walls.castRay(eye, to, range - m_params.wall_margin_m)))
+                continue;  // behind a wall
+            ++out.expected;
+            bool seen = false;
+            for (std::size_t k = 0; k < f.obs->size() && !seen; ++k) {
+                if (map.usableClassOf(*f.obs, k) != c) continue;
+                const Eigen::Vector3d& p = f.obs->boxInRobot(k).center;
+                double x = 0, y = 0;
+                robot.composePoint(p.x(), p.y(), x, y);
+                seen = (x - centre.x()) * (x - centre.x()) + (y - centre.y()) * (y - centre.y()) <= seen_r2;
+            }
+            out.seen += seen;
+        }
+    }
+    return out;
+}
+
+}  // namespace simp::localization
