@@ -1,3 +1,4 @@
+#include <simp/camera/Occluders.h>
 #include <simp/camera/PinholeCamera.h>
 #include <simp/localization/ViewWindow.h>
 
@@ -45,27 +46,39 @@ ViewWindow::Recall ViewWindow::recallAt(const maps::CObjectMap& map, const mrpt:
                                         const mrpt::poses::CPose2D& odometry_now, double t_now_s) const {
     Recall out;
     const auto& objects = map.data().objects;
+    const std::vector<char> class_occludes = camera::occludingClasses(map.data().class_names);
     const double seen_r2 = m_params.seen_radius_m * m_params.seen_radius_m;
-    std::vector<Eigen::Vector2d> shown;  // world centres of the frame's usable detections of one class
+    // Boxes farther than this from the camera can neither be expected nor hide an expected one.
+    const double near_m = m_params.max_range_m + 2.0;
+    camera::ZBufferParams zb;
+    zb.occludes = &m_box_occludes;
+    zb.max_distance_m = near_m;
     for (const auto& f : m_frames) {
         if (t_now_s - f.t_s > m_params.max_age_s) continue;
         const mrpt::poses::CPose2D robot = estimate + (f.odometry_pose - odometry_now);
         const camera::PinholeCamera view = cameraOf(*f.obs, robot.asTPose());
-        const Eigen::Isometry3d camera_T_world = view.world_T_camera.inverse();
         const Eigen::Vector2d eye = view.world_T_camera.translation().head<2>();
-        for (const auto& o : objects) {
+        m_boxes.clear(), m_box_object.clear(), m_box_occludes.clear();
+        for (std::size_t i = 0; i < objects.size(); ++i) {
+            if ((objects[i].box.center.head<2>() - eye).norm() > near_m) continue;
+            const auto c = static_cast<std::size_t>(objects[i].class_id);
+            m_boxes.push_back(objects[i].box);
+            m_box_object.push_back(i);
+            m_box_occludes.push_back(c < class_occludes.size() ? class_occludes[c] : 1);
+        }
+        if (m_boxes.empty()) continue;
+        m_renderer.render(view, m_boxes, &m_walls, zb, m_views);
+        for (std::size_t b = 0; b < m_boxes.size(); ++b) {
+            const auto& o = objects[m_box_object[b]];
             const int c = o.class_id;
             if (c < 0 || static_cast<std::size_t>(c) >= m_max_range_m.size() || m_min_range_m[c] > m_max_range_m[c])
                 continue;  // a class the detector has not shown in this run
-            const Eigen::Vector3d& centre = o.box.center;
-            const Eigen::Vector2d to = centre.head<2>() - eye;
-            const double range = to.norm();
-            if (range < m_min_range_m[c] || range > std::min(m_max_range_m[c], m_params.max_range_m)) continue;
-            const Eigen::Vector3d in_camera = camera_T_world * centre;
-            if (in_camera.z() <= 0 || !view.inImage(view.project(in_camera))) continue;
-            if (range > m_params.wall_margin_m &&
-                std::isfinite(m_walls.castRay(eye, to, range - m_params.wall_margin_m)))
-                continue;  // behind a wall
+            const camera::BoxView& v = m_views[b];
+            const double range = (o.box.center.head<2>() - eye).norm();
+            if (range < m_min_range_m[c] || range > std::min(m_max_range_m[c], m_params.max_range_m) ||
+                v.covered_px <= 0 || v.truncated_fraction > m_params.max_truncated_fraction ||
+                v.occludedFraction() > m_params.max_occluded_fraction)
+                continue;
             ++out.expected;
             bool seen = false;
             for (std::size_t k = 0; k < f.obs->size() && !seen; ++k) {
@@ -73,7 +86,8 @@ ViewWindow::Recall ViewWindow::recallAt(const maps::CObjectMap& map, const mrpt:
                 const Eigen::Vector3d& p = f.obs->boxInRobot(k).center;
                 double x = 0, y = 0;
                 robot.composePoint(p.x(), p.y(), x, y);
-                seen = (x - centre.x()) * (x - centre.x()) + (y - centre.y()) * (y - centre.y()) <= seen_r2;
+                const double dx = x - o.box.center.x(), dy = y - o.box.center.y();
+                seen = dx * dx + dy * dy <= seen_r2;
             }
             out.seen += seen;
         }

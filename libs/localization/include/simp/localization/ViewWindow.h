@@ -7,17 +7,19 @@
 /// in view that the robot never saw. The challenger's take-over elsewhere asks it
 /// (doc/localization.md "Challenger").
 ///
-/// A map object is expected in a frame when its box centre is in front of the camera and projects
-/// inside the image, lies within the class's range and no wall of the floor plan stands on the way
-/// (camera::FloorPlanGrid). The class's range is what the detector has shown so far in this run:
-/// from the nearest to the farthest usable detection of the class (capped at max_range_m); a class
-/// never detected is expected nowhere (a detector that does not report a class says nothing of it).
-/// It is seen when a usable detection of its class in that frame lies within seen_radius_m of it.
-/// Occlusion by other objects is not modelled: it lowers every place's recall alike.
+/// A map object is expected in a frame when the mapper's visibility says it is active there
+/// (camera::ZBufferRenderer with the floor plan's walls and the other objects as occluders, doors
+/// hiding nothing; at most max_truncated_fraction of its projected box outside the image and
+/// max_occluded_fraction of it hidden) and its distance lies within the class's range: what the
+/// detector has shown so far in this run, from the nearest to the farthest usable detection of the
+/// class (capped at max_range_m); a class never detected is expected nowhere (a detector that does
+/// not report a class says nothing of it). It is shown when a usable detection of its class in that
+/// frame lies within seen_radius_m of it.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/poses/CPose2D.h>
 #include <simp/camera/FloorPlanGrid.h>
+#include <simp/camera/ZBufferVisibility.h>
 #include <simp/maps/CObjectMap.h>
 #include <simp/obs/CObservationObjects3D.h>
 
@@ -30,7 +32,8 @@ namespace simp::localization {
 struct ViewWindowParams {
     double max_range_m = 4.0;      ///< no object farther from the camera than this is expected (m)
     double seen_radius_m = 1.0;    ///< a detection of the class this close to the object shows it (m)
-    double wall_margin_m = 0.4;    ///< walls this close to the object's centre do not hide it (m): boards hang on them
+    double max_truncated_fraction = 0.5;  ///< as the mapper's truncation_threshold
+    double max_occluded_fraction = 0.5;   ///< as the mapper's max_occluded_fraction
     double max_age_s = 30.0;       ///< frames older than this leave the window (s)
     std::size_t max_frames = 600;  ///< ... and the oldest beyond this many
 };
@@ -65,6 +68,11 @@ class ViewWindow {
     };
     ViewWindowParams m_params;
     camera::FloorPlanGrid m_walls;
+    mutable camera::ZBufferRenderer m_renderer;  ///< its buffers, reused by every recallAt()
+    mutable std::vector<geometry::Box3D> m_boxes;   ///< the map objects near a frame's camera
+    mutable std::vector<std::size_t> m_box_object;  ///< ... their indices in the map
+    mutable std::vector<char> m_box_occludes;
+    mutable std::vector<camera::BoxView> m_views;
     std::deque<Frame> m_frames;
     std::vector<double> m_min_range_m, m_max_range_m;  ///< per map class; min > max: never detected
 };
