@@ -14,6 +14,7 @@
 #include <simp/localization/DetectionNovelty.h>
 #include <simp/localization/DetectionPoseSampler.h>
 #include <simp/localization/HypothesisSearch.h>
+#include <simp/localization/KldSampleCount.h>
 #include <simp/localization/LocalizationState.h>
 #include <simp/localization/LocalizeOptions.h>
 #include <simp/localization/ObjectMcl.h>
@@ -248,13 +249,5 @@ class Localizer {
     ViewWindow m_views_since_lost;  ///< [Challenger] views: the camera frames since `lost`
     std::optional<ViewWindow::Recall> m_views_asked;  ///< what the take-over asked of them at this step
 };
-
-/// Bins of kld's sizes (xy in m, phi in rad) that hold at least one particle.
-std::size_t occupiedBinCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld);
-
-/// Particles needed for a KLD bound (Fox, IJRR 2003) on the set's occupied bins of kld's bin
-/// sizes (xy in m, phi in rad as MRPT's TKLDParams holds it): (k-1)/(2 eps) (1 - 2/(9(k-1)) +
-/// sqrt(2/(9(k-1))) z_{1-delta})^3 with k occupied bins.
-std::size_t kldParticleCount(const mrpt::poses::CPosePDFParticles& pdf, const mrpt::slam::TKLDParams& kld);
 
 }  // namespace simp::localization
