@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace simp::localization {
 namespace {
@@ -29,6 +30,7 @@ void ViewWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationO
         m_max_range_m.assign(classes, 0.0);
     }
     const mrpt::poses::CPose3D& cam = obs->cameraPose();
+    std::vector<Shown> shown;
     for (std::size_t k = 0; k < obs->size(); ++k) {
         const int c = map.usableClassOf(*obs, k);
         if (c < 0) continue;
@@ -36,8 +38,9 @@ void ViewWindow::add(const maps::CObjectMap& map, const simp::obs::CObservationO
         const double r = std::hypot(p.x() - cam.x(), p.y() - cam.y());
         m_min_range_m[c] = std::min(m_min_range_m[c], r);
         m_max_range_m[c] = std::max(m_max_range_m[c], r);
+        shown.push_back({c, p.x(), p.y()});
     }
-    m_frames.push_back({obs, odometry_pose, t_s});
+    m_frames.push_back({obs, odometry_pose, t_s, std::move(shown)});
     while (m_frames.size() > m_params.max_frames || (!m_frames.empty() && t_s - m_frames.front().t_s > m_params.max_age_s))
         m_frames.pop_front();
 }
@@ -81,11 +84,10 @@ ViewWindow::Recall ViewWindow::recallAt(const maps::CObjectMap& map, const mrpt:
                 continue;
             ++out.expected;
             bool seen = false;
-            for (std::size_t k = 0; k < f.obs->size() && !seen; ++k) {
-                if (map.usableClassOf(*f.obs, k) != c) continue;
-                const Eigen::Vector3d& p = f.obs->boxInRobot(k).center;
+            for (std::size_t k = 0; k < f.shown.size() && !seen; ++k) {
+                if (f.shown[k].map_class != c) continue;
                 double x = 0, y = 0;
-                robot.composePoint(p.x(), p.y(), x, y);
+                robot.composePoint(f.shown[k].x, f.shown[k].y, x, y);
                 const double dx = x - o.box.center.x(), dy = y - o.box.center.y();
                 seen = dx * dx + dy * dy <= seen_r2;
             }

@@ -48,7 +48,6 @@ class ViewWindow {
              const mrpt::poses::CPose2D& odometry_pose, double t_s);
     /// Forgets the frames (not the classes' ranges: they are the detector's).
     void clear() { m_frames.clear(); }
-    std::size_t size() const { return m_frames.size(); }
 
     struct Recall {
         std::size_t expected = 0;  ///< views of map objects the frames should have shown
@@ -61,10 +60,16 @@ class ViewWindow {
                     const mrpt::poses::CPose2D& odometry_now, double t_now_s) const;
 
    private:
+    /// A usable detection of a frame: its map class and box centre in the robot frame (m).
+    struct Shown {
+        int map_class = -1;
+        double x = 0, y = 0;
+    };
     struct Frame {
         simp::obs::CObservationObjects3D::Ptr obs;
         mrpt::poses::CPose2D odometry_pose;
         double t_s = 0;
+        std::vector<Shown> shown;  ///< its usable detections, classed once when it was added
     };
     ViewWindowParams m_params;
     camera::FloorPlanGrid m_walls;
