@@ -128,6 +128,8 @@ void Localizer::startGlobal() {
     m_challenger.reset();
     m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
+    m_entered_localized = false;
+    m_local_target.reset();
 }
 
 void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad) {
@@ -142,6 +144,8 @@ void Localizer::startAt(const mrpt::math::TPose2D& pose, double sigma_xy_m, doub
     m_challenger.reset();
     m_last_search_s = -std::numeric_limits<double>::infinity();
     m_first = true;
+    m_entered_localized = false;
+    m_local_target.reset();
 }
 
 std::size_t Localizer::particleTarget(const ObjectMcl& mcl, LocalizationState state) const {
@@ -332,13 +336,17 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         const Hypothesis best = m_search.climb(m_fit, now.asTPose(), m_odometry, own);
         fit.local_gain = best.log_likelihood - own;
         fit.local_offset_m = std::hypot(best.pose.x - now.x(), best.pose.y - now.y());
-        if (!lost && betterPoseNearby(fit, m_opts.state.local_margin)) m_local_target = best.pose;
+        // Draws only before the filter has localized by its own test: later, a better pose nearby was
+        // mostly changed furniture pulling a right set (doc/results-localization.md, 37th session).
+        if (!lost && !m_entered_localized && betterPoseNearby(fit, m_opts.state.local_margin)) m_local_target = best.pose;
     }
     if (trigger) {
         const auto before = m_monitor.state();
         const ParticleSummary& s = *m_summary;
         m_monitor.update(s.cluster_weight, std::sqrt(s.cluster_cov(0, 0) + s.cluster_cov(1, 1)), fit,
                          rec.detections > 0);
+        if (m_monitor.state() == LocalizationState::Localized && before != LocalizationState::Localized)
+            m_entered_localized = true;
         // The detections of the lost hypothesis say nothing about the next one, unless a rival
         // place explained them (then they are what will find it again).
         const bool rival_won = fit.rival_advantage >= m_opts.state.rival_lost_margin;

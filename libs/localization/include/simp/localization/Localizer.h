@@ -232,6 +232,9 @@ class Localizer {
     /// A pose near the estimate that explains the fit window better by [State] local_margin, as of
     /// the last update (the next one draws [SensorResetting] local_fraction of the set about it).
     std::optional<mrpt::math::TPose2D> m_local_target;
+    /// The state has entered `localized` by its own test since the start (not by startAt): from then
+    /// on a better pose nearby ends `localized` but draws no particles (doc/localization.md).
+    bool m_entered_localized = false;
     FitWindow m_fit;
     FitWindow m_since_lost;  ///< [Challenger] window: what the challenger is judged on
     StateMonitor m_monitor;
