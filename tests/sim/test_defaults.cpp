@@ -75,8 +75,9 @@ void expectSame(const simp::sim::SimParams& a, const simp::sim::SimParams& b) {
     SIMP_EXPECT_SAME(visibility.max_range_m);
     SIMP_EXPECT_SAME(visibility.default_max_range_m);
     SIMP_EXPECT_SAME(visibility.min_inside_fraction);
-    SIMP_EXPECT_SAME(visibility.wall_rays);
-    SIMP_EXPECT_SAME(visibility.min_visible_ray_fraction);
+    SIMP_EXPECT_SAME(visibility.render_downscale);
+    SIMP_EXPECT_SAME(visibility.min_unwalled_fraction);
+    SIMP_EXPECT_SAME(visibility.wall_depth_margin_m);
     SIMP_EXPECT_SAME(visibility.self_margin_m);
     SIMP_EXPECT_SAME(visibility.max_occluded_fraction);
     SIMP_EXPECT_SAME(detector.detection_probability);

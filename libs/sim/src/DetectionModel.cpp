@@ -14,8 +14,7 @@ float drawScore(double mean, double std, Rng& rng) {
 
 std::optional<obs::Detection3D> finish(const camera::PinholeCamera& view, obs::Detection3D d) {
     obs::ImageBox2D b;
-    double inside = 0;
-    if (!projectBox(view, d.box_in_camera, b, inside)) return std::nullopt;
+    if (!imageBoxOf(view, d.box_in_camera, b)) return std::nullopt;
     d.box_2d = b;
     return d;
 }

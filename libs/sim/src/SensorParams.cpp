@@ -77,10 +77,11 @@ const io::OptionTable<VisibilityParams>& VisibilityParams::table() {
         perClass(t, "max_range_m", &O::max_range_m, "per class: maximum distance; 0 = `default_max_range_m`");
         t.number("default_max_range_m", &O::default_max_range_m, "m", ValueRange::positive(), "range limit of classes whose maximum is 0")
             .number("min_inside_fraction", &O::min_inside_fraction, "", ValueRange::fraction(), "truncation: fraction of the 8 projected box corners that must fall inside the image")
-            .integer("wall_rays", &O::wall_rays, ValueRange::between(1, 17), "wall occlusion: rays to the box centre and `wall_rays` - 1 footprint points")
-            .number("min_visible_ray_fraction", &O::min_visible_ray_fraction, "", ValueRange::fraction(), "fraction of the rays that must cross no wall cell")
-            .number("self_margin_m", &O::self_margin_m, "m", ValueRange{0, 1, false, true}, "rays ignore wall cells this close to the object's own footprint")
-            .number("max_occluded_fraction", &O::max_occluded_fraction, "", ValueRange::fraction(), "object occlusion: dropped when more of its 2D box is covered by nearer boxes");
+            .integer("render_downscale", &O::render_downscale, ValueRange::between(1, 64), "image pixels per rendered pixel (per side) of the occlusion renderer (z-buffer)")
+            .number("wall_depth_margin_m", &O::wall_depth_margin_m, "m", ValueRange{0, 1, false, true}, "box surfaces up to this far behind the first wall face still count in front of it (a door in its gap)")
+            .number("self_margin_m", &O::self_margin_m, "m", ValueRange{0, 1, false, true}, "wall cells this close to the footprint of an object (not a door) are the object drawn into the floor plan, not a wall")
+            .number("min_unwalled_fraction", &O::min_unwalled_fraction, "", ValueRange::fraction(), "wall occlusion: fraction of the box's rendered pixels that must lie in front of the walls")
+            .number("max_occluded_fraction", &O::max_occluded_fraction, "", ValueRange::fraction(), "object occlusion: dropped when nearer boxes hide more of its pixels in front of the walls");
         return t;
     }();
     return t;

@@ -95,6 +95,10 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     const auto& names = w.objects.class_names;
     const int person_class = w.objects.classId("person");
     const Raster walls = wallRaster(w.floorplan);
+    std::vector<world::MapObject> ever_standing = map_world.objects.objects;  // drawn into the plan, or standing now
+    ever_standing.insert(ever_standing.end(), w.objects.objects.begin(), w.objects.objects.end());
+    const camera::FloorPlanGrid camera_walls = cameraWalls(w.floorplan, ever_standing, names, params.visibility.self_margin_m);
+    SceneVisibility visibility(camera_walls, params.visibility);
     const Raster obstacles = drivingObstacles(w);
 
     const double dt = 1.0 / params.odometry.rate_hz;
@@ -171,7 +175,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
                 ob->setImageSize(K.ncols, K.nrows);
                 ob->setClassNames(names);
                 std::vector<obs::Detection3D> dets;
-                for (const auto& v : visibleObjects(view, scene, names, walls, params.visibility)) {
+                for (const auto& v : visibility.visible(view, scene, names)) {
                     const auto& o = scene[v.index];
                     const bool is_person = v.index >= n_static;
                     const auto noise = is_person ? person_noise : centreNoiseOf(noiseFor(w.objects, o, params.detector), o, params.detector);

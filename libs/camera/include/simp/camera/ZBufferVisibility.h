@@ -4,8 +4,9 @@
 /// frame: the boxes are rendered into a reduced-resolution z-buffer of the camera (depth test),
 /// walls of the floor plan are ray cast once per z-buffer column and block what lies behind them,
 /// and the projected box's fraction outside the image measures truncation.
-/// (The other strategies: RayCastVisibility.h, exact per image pixel for labels; the simulator's
-/// 2D-box depth test in sim/Visibility.h. doc/architecture.md "Camera and visibility".)
+/// The simulator renders its cameras with it too, at its own resolution and thresholds
+/// (sim/Visibility.h); the labels still ray cast per pixel (RayCastVisibility.h).
+/// doc/architecture.md "Camera and visibility".
 
 #include <simp/camera/FloorPlanGrid.h>
 #include <simp/camera/PinholeCamera.h>

@@ -37,10 +37,11 @@ struct VisibilityParams {
     std::vector<double> max_range_m{3.0, 0.0, 4.0, 4.5, 4.5, 0.0, 4.5, 3.5, 3.0, 5.0, 0.0, 3.0, 0.0, 4.0};
     double default_max_range_m = 5.0;     ///< range limit of classes with max 0 (m)
     double min_inside_fraction = 0.5;     ///< truncation: fraction of the 8 projected corners inside the image
-    int wall_rays = 5;                    ///< rays cast to the box centre and this-1 footprint points (>= 1)
-    double min_visible_ray_fraction = 0.4; ///< wall occlusion: fraction of rays that must reach the object
-    double self_margin_m = 0.05;          ///< rays ignore walls this close to the object's own footprint (m)
-    double max_occluded_fraction = 0.7;   ///< object occlusion: fraction of the 2D box hidden by nearer boxes
+    int render_downscale = 4;             ///< image pixels per rendered pixel (per side) of the occlusion renderer
+    double wall_depth_margin_m = 0.1;     ///< box surfaces up to this far behind the first wall face still count in front of it (m)
+    double self_margin_m = 0.05;          ///< wall cells this close to an object's footprint are the object drawn into the plan (m)
+    double min_unwalled_fraction = 0.4;   ///< wall occlusion: fraction of the box's rendered pixels that must lie in front of the walls
+    double max_occluded_fraction = 0.7;   ///< object occlusion: of those, the fraction nearer boxes may hide
 
     /// The per-class lists hold one value per class of simp::obs::defaultClassNames().
     static const io::OptionTable<VisibilityParams>& table();
