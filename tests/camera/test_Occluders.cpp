@@ -1,8 +1,7 @@
-/// Doors are seen but hide nothing, in both occlusion strategies (z-buffer and ray cast); other
-/// boxes and walls hide what lies behind them.
+/// Doors are seen but hide nothing in the occlusion renderer (z-buffer); other boxes and walls hide
+/// what lies behind them, with walls cast per column or along every pixel's own ray.
 #include <gtest/gtest.h>
 #include <simp/camera/Occluders.h>
-#include <simp/camera/RayCastVisibility.h>
 #include <simp/camera/ZBufferVisibility.h>
 #include <simp/obs/CObservationObjects3D.h>
 
@@ -20,6 +19,27 @@ PinholeCamera forwardCamera() {
 /// An open door 2 m ahead (0.9 m wide, 2 m high, 5 cm thick) and a cabinet right behind it.
 const std::vector<simp::geometry::Box3D> kDoorAndCabinet{makeUprightBox({2.0, 0, 1.0}, {0.05, 0.9, 2.0}, 0.0),
                                                          makeUprightBox({3.5, 0, 0.5}, {0.5, 0.5, 1.0}, 0.0)};
+
+/// A 6 m x 6 m free floor with a wall across x in [3.0, 3.1) for y below `wall_end_y`.
+FloorPlanGrid wallUpTo(double wall_end_y) {
+    mrpt::maps::COccupancyGridMap2D g(-1, 5, -3, 3, 0.1f);
+    g.fill(1.0f);
+    for (int cy = 0; cy < g.y2idx(wall_end_y); ++cy) g.setCell(g.x2idx(3.05), cy, 0.0f);
+    return FloorPlanGrid(g);
+}
+
+/// The views of `boxes` with the walls cast per column (first) and per pixel (second).
+std::pair<std::vector<BoxView>, std::vector<BoxView>> perColumnAndPerPixel(const PinholeCamera& camera,
+                                                                           const std::vector<simp::geometry::Box3D>& boxes,
+                                                                           const FloorPlanGrid& walls, ZBufferParams p) {
+    ZBufferRenderer r;
+    std::pair<std::vector<BoxView>, std::vector<BoxView>> out;
+    p.walls_per_pixel = false;
+    r.render(camera, boxes, &walls, p, out.first);
+    p.walls_per_pixel = true;
+    r.render(camera, boxes, &walls, p, out.second);
+    return out;
+}
 
 }  // namespace
 
@@ -60,15 +80,42 @@ TEST(Occluders, ZBufferHidesADoorBehindACabinet) {
     EXPECT_EQ(v[1].visible_px, v[1].covered_px);
 }
 
-TEST(Occluders, RayCastSeesThroughADoor) {
-    RayCastParams p;
-    const std::vector<double> solid = rayCastVisibility(forwardCamera(), kDoorAndCabinet, nullptr, p);
-    EXPECT_DOUBLE_EQ(solid[0], 1.0);
-    EXPECT_DOUBLE_EQ(solid[1], 0.0);
-    const std::vector<char> occ{0, 1};
-    const std::vector<double> see_through = rayCastVisibility(forwardCamera(), kDoorAndCabinet, nullptr, p, &occ);
-    EXPECT_DOUBLE_EQ(see_through[0], 1.0);
-    EXPECT_DOUBLE_EQ(see_through[1], 1.0);
+TEST(Occluders, WallsPerPixelFollowARolledCamera) {
+    // A wall on the right half (y < 0, x in [3.0, 3.1)), the camera 0.3 m left of it and rolled 90
+    // deg about its optical axis: image columns are horizontal in the world. Per column, the walls
+    // are cast along each column's ray at the principal row, all straight ahead past the wall's end,
+    // so the box behind the wall shows; along every pixel's own ray it is hidden, and the box
+    // behind the open half stays seen both ways.
+    const FloorPlanGrid walls = wallUpTo(0.0);
+    PinholeCamera rolled = PinholeCamera::onRobot(mrpt::math::TPose2D(0, 0.3, 0), simp::obs::cameraPoseOnRobot(0, 0, 0.63, 0),
+                                                  defaultIntrinsics());
+    rolled.world_T_camera.rotate(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()));
+    const std::vector<simp::geometry::Box3D> boxes{makeUprightBox({4.0, -0.6, 0.6}, {0.4, 0.4, 0.4}, 0.0),
+                                                   makeUprightBox({4.0, 1.2, 0.6}, {0.4, 0.4, 0.4}, 0.0)};
+    ZBufferParams p;
+    p.wall_depth_margin_m = 0.0;
+    const auto [per_column, per_pixel] = perColumnAndPerPixel(rolled, boxes, walls, p);
+    ASSERT_GT(per_pixel[0].covered_px, 10);
+    ASSERT_GT(per_pixel[1].covered_px, 10);
+    EXPECT_EQ(per_pixel[0].visible_px, 0);
+    EXPECT_EQ(per_pixel[1].visible_px, per_pixel[1].covered_px);
+    EXPECT_EQ(per_column[0].visible_px, per_column[0].covered_px);  // what the column approximation misses
+    EXPECT_EQ(per_column[1].visible_px, per_column[1].covered_px);
+}
+
+TEST(Occluders, WallsPerPixelEqualWallsPerColumnForALevelCamera) {
+    const FloorPlanGrid walls = wallUpTo(0.2);
+    const std::vector<simp::geometry::Box3D> boxes{makeUprightBox({4.0, -0.8, 0.6}, {0.4, 0.8, 1.2}, 0.3),
+                                                   makeUprightBox({3.5, 0.4, 0.5}, {0.5, 0.5, 1.0}, 0.0),
+                                                   makeUprightBox({2.0, -0.2, 0.3}, {0.3, 0.3, 0.6}, 0.0)};
+    const auto [per_column, per_pixel] = perColumnAndPerPixel(forwardCamera(), boxes, walls, ZBufferParams{});
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+        ASSERT_GT(per_pixel[k].covered_px, 0) << k;
+        EXPECT_EQ(per_pixel[k].covered_px, per_column[k].covered_px) << k;
+        EXPECT_EQ(per_pixel[k].unwalled_px, per_column[k].unwalled_px) << k;
+        EXPECT_EQ(per_pixel[k].visible_px, per_column[k].visible_px) << k;
+    }
+    EXPECT_LT(per_pixel[0].unwalled_px, per_pixel[0].covered_px);  // the wall does hide something
 }
 
 TEST(Occluders, WallsStillOccludeBehindADoorGap) {
@@ -79,9 +126,6 @@ TEST(Occluders, WallsStillOccludeBehindADoorGap) {
     for (int cy = 0; cy < static_cast<int>(g.getSizeY()); ++cy) g.setCell(g.x2idx(3.05), cy, 0.0f);
     const FloorPlanGrid walls(g);
     const std::vector<char> occ{0, 1};
-    const std::vector<double> vis = rayCastVisibility(forwardCamera(), kDoorAndCabinet, &walls, RayCastParams{}, &occ);
-    EXPECT_DOUBLE_EQ(vis[0], 1.0);
-    EXPECT_DOUBLE_EQ(vis[1], 0.0);
     ZBufferParams p;
     p.occludes = &occ;
     p.wall_depth_margin_m = 0.0;

@@ -3,7 +3,7 @@
 /// board half outside the image (truncation), a chair behind a wall of the floor plan.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
-#include <simp/camera/RayCastVisibility.h>
+#include <simp/camera/ZBufferVisibility.h>
 #include <simp/labels/LabelGenerator.h>
 #include <simp/labels/LabelsApp.h>
 #include <simp/detector_io/Omni3DBox.h>
@@ -114,15 +114,21 @@ TEST(Visibility, BoxesAndWallsOcclude) {
     std::vector<geometry::Box3D> boxes;
     for (const auto& o : w.objects.objects) boxes.push_back(o.box);
     const camera::FloorPlanGrid walls(w.floorplan);
-    const auto with_walls = camera::rayCastVisibility(im.camera, boxes, &walls, {});
-    EXPECT_LT(with_walls[0], 0.1) << "chair behind the table";
-    EXPECT_DOUBLE_EQ(with_walls[1], 1.0);
-    EXPECT_DOUBLE_EQ(with_walls[2], 1.0);
-    EXPECT_DOUBLE_EQ(with_walls[3], 0.0) << "chair behind the wall";
-    const auto no_walls = camera::rayCastVisibility(im.camera, boxes, nullptr, {});
-    EXPECT_DOUBLE_EQ(no_walls[3], 1.0);
-    // Ray-box entry depth: straight ahead into the table's near face at x = 2.6 m.
-    EXPECT_NEAR(camera::rayBoxEntry({0, 0, 1}, {1, 0, 0}, boxes[1]), 2.6, 1e-12);
+    // As simp-labels renders: its pixel step, walls per pixel, no margin behind the wall face.
+    camera::ZBufferParams p;
+    p.downscale = labels::LabelOptions().visibility.pixel_step;
+    p.wall_depth_margin_m = 0.0;
+    p.max_distance_m = 30.0;
+    p.walls_per_pixel = true;
+    camera::ZBufferRenderer r;
+    std::vector<camera::BoxView> with_walls, no_walls;
+    r.render(im.camera, boxes, &walls, p, with_walls);
+    EXPECT_LT(with_walls[0].visibleFraction(), 0.1) << "chair behind the table";
+    EXPECT_DOUBLE_EQ(with_walls[1].visibleFraction(), 1.0);
+    EXPECT_DOUBLE_EQ(with_walls[2].visibleFraction(), 1.0);
+    EXPECT_DOUBLE_EQ(with_walls[3].visibleFraction(), 0.0) << "chair behind the wall";
+    r.render(im.camera, boxes, nullptr, p, no_walls);
+    EXPECT_DOUBLE_EQ(no_walls[3].visibleFraction(), 1.0);
 }
 
 TEST(Visibility, DoorsHideNothing) {

@@ -1,10 +1,10 @@
 /// simp-labels on the authors' real office floor (read-only, optional): the ground-truth floor plan
-/// draws furniture footprints as occupied, so the wall ray casting must ignore the cells under the
+/// draws furniture footprints as occupied, so the walls must ignore the cells under the
 /// objects (visibility_ignore_object_cells), or every object would hide itself.
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
-#include <simp/camera/RayCastVisibility.h>
+#include <simp/camera/ZBufferVisibility.h>
 #include <simp/labels/CameraFrames.h>
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/world/SimpFormat.h>
@@ -34,8 +34,13 @@ TEST(LabelsOffice, ObjectsSeenFromAFreeViewpointAreVisible) {
     for (const auto& o : w.objects.objects) boxes.push_back(o.box);
     camera::PinholeCamera cam;  // the authors' intrinsics
     int tried = 0, visible_masked = 0, visible_unmasked = 0;
-    camera::RayCastParams params;
-    params.pixel_step = 8;
+    camera::ZBufferParams params;  // as simp-labels renders, at 1/8 resolution
+    params.downscale = 8;
+    params.wall_depth_margin_m = 0.0;
+    params.max_distance_m = 30.0;
+    params.walls_per_pixel = true;
+    camera::ZBufferRenderer renderer;
+    std::vector<camera::BoxView> views;
     const camera::FloorPlanGrid unmasked(w.floorplan);
     camera::FloorPlanGrid masked(w.floorplan);
     masked.clearWallsUnder(boxes, 0.10);
@@ -60,8 +65,10 @@ TEST(LabelsOffice, ObjectsSeenFromAFreeViewpointAreVisible) {
             cam.world_T_camera = camera::toIsometry(mrpt::poses::CPose3D(mrpt::poses::CPose2D(at.x(), at.y(), 0)) +
                                                     obs::cameraPoseOnRobot(0, 0, 0.63, yaw));
             ++tried;
-            const double vm = camera::rayCastVisibility(cam, boxes, &masked, params)[i];
-            const double vu = camera::rayCastVisibility(cam, boxes, &unmasked, params)[i];
+            renderer.render(cam, boxes, &masked, params, views);
+            const double vm = views[i].visibleFraction();
+            renderer.render(cam, boxes, &unmasked, params, views);
+            const double vu = views[i].visibleFraction();
             visible_masked += vm > 0.5;
             visible_unmasked += vu > 0.5;
             break;

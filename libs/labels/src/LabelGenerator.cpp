@@ -1,7 +1,7 @@
 /// \file LabelGenerator.cpp
 #include <simp/geometry/Hungarian.h>
 #include <simp/camera/Occluders.h>
-#include <simp/camera/RayCastVisibility.h>
+#include <simp/camera/ZBufferVisibility.h>
 #include <simp/labels/LabelGenerator.h>
 
 #include <cmath>
@@ -20,7 +20,7 @@ const io::OptionTable<LabelOptions>& LabelOptions::table() {
             .number("max_truncation", &O::max_truncation, "", ValueRange::between(0, 1), "objects more truncated are not candidates")
             .number("near_m", &O::near_m, "m", ValueRange::positive(), "near clipping plane (camera z)")
             .integer("visibility_pixel_step", [](auto& o) -> auto& { return o.visibility.pixel_step; }, "px", ValueRange::atLeast(1),
-                     "one visibility ray every N px in u and v")
+                     "visibility rendered at one pixel per N x N image pixels")
             .number("visibility_occupied_threshold", [](auto& o) -> auto& { return o.visibility.occupied_threshold; }, "",
                     ValueRange::aboveUpTo(0, 1), "floor-plan cells with occupancy >= this are walls")
             .flag("visibility_ignore_object_cells", [](auto& o) -> auto& { return o.visibility.ignore_object_cells; },
@@ -29,7 +29,7 @@ const io::OptionTable<LabelOptions>& LabelOptions::table() {
             .number("visibility_object_cell_margin_m", [](auto& o) -> auto& { return o.visibility.object_cell_margin_m; }, "m",
                     ValueRange::atLeast(0), "margin around the footprints for the previous key; the authors' outlines lie up to 2 cells outside the boxes")
             .number("visibility_max_range_m", [](auto& o) -> auto& { return o.visibility.max_range_m; }, "m", ValueRange::positive(),
-                    "wall rays stop here");
+                    "boxes and walls farther than this are not rendered");
     return t;
 }
 
@@ -78,14 +78,21 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
         const auto c = static_cast<std::size_t>(gt.objects[i].class_id);
         if (c < class_occludes.size()) occludes[i] = class_occludes[c];
     }
-    camera::RayCastParams ray_cast;
-    ray_cast.pixel_step = options.visibility.pixel_step;
-    ray_cast.max_range_m = options.visibility.max_range_m;
+    // The one occlusion renderer, at the pixel step, walls along every pixel's own ray (the
+    // authors' cameras are tilted) and no depth margin behind them.
+    camera::ZBufferParams render;
+    render.downscale = options.visibility.pixel_step;
+    render.near_plane_m = options.near_m;
+    render.wall_depth_margin_m = 0.0;
+    render.max_distance_m = options.visibility.max_range_m;
+    render.walls_per_pixel = true;
+    render.occludes = &occludes;
+    camera::ZBufferRenderer renderer;
+    std::vector<camera::BoxView> views;
     for (const PosedImage& im : images) {
         std::vector<camera::ProjectedBox> proj(boxes.size());
         for (std::size_t i = 0; i < boxes.size(); ++i) proj[i] = camera::projectBox(im.camera, boxes[i], options.near_m);
-        const std::vector<double> vis =
-            camera::rayCastVisibility(im.camera, boxes, floorplan != nullptr ? &walls : nullptr, ray_cast, &occludes);
+        renderer.render(im.camera, boxes, floorplan != nullptr ? &walls : nullptr, render, views);
         const auto& dets = by_image[im.id];
         std::vector<int> match_of_object(boxes.size(), -1);
         // Per class: Hungarian assignment on 1 - IoU(bbox2D_trunc, detection), accepted above the threshold.
@@ -126,7 +133,7 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
             a.box_cam = boxInCameraOmni3D(im, boxes[i]);
             a.projection = proj[i];
             if (matched) a.detection = *dets[static_cast<std::size_t>(match_of_object[i])];
-            a.visibility = vis[i];
+            a.visibility = views[i].visibleFraction();
             out.annotations.push_back(a);
         }
         for (char u : used) out.detections_unmatched += u ? 0 : 1;

@@ -1,7 +1,7 @@
 #pragma once
 /// \file FloorPlanGrid.h
 /// The one view of a floor plan as walls / free / outside cells (thresholds: FloorPlanThresholds.h),
-/// with 2D ray casting: the occluders of every visibility strategy (walls extruded vertically
+/// with 2D ray casting: the occluders of the occlusion renderer (walls extruded vertically
 /// without limit), the contacts of wall alignment, the free floor of the mapper's tests.
 
 #include <mrpt/maps/COccupancyGridMap2D.h>

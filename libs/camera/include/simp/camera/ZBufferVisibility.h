@@ -1,11 +1,11 @@
 #pragma once
 /// \file ZBufferVisibility.h
-/// Visibility strategy of the mapper (the I_active state of Eq. objdef), fast enough for every
+/// The project's one occlusion renderer; the mapper's I_active of Eq. objdef, fast enough for every
 /// frame: the boxes are rendered into a reduced-resolution z-buffer of the camera (depth test),
-/// walls of the floor plan are ray cast once per z-buffer column and block what lies behind them,
-/// and the projected box's fraction outside the image measures truncation.
+/// walls of the floor plan are ray cast once per z-buffer column (or per pixel) and block what lies
+/// behind them, and the projected box's fraction outside the image measures truncation.
 /// The simulator renders its cameras with it too, at its own resolution and thresholds
-/// (sim/Visibility.h); the labels still ray cast per pixel (RayCastVisibility.h).
+/// (sim/Visibility.h), and the label generator at its pixel step with walls per pixel.
 /// doc/architecture.md "Camera and visibility".
 
 #include <simp/camera/FloorPlanGrid.h>
@@ -25,6 +25,8 @@ struct BoxView {
     double truncated_fraction = 1;  ///< fraction of its projected 2D bounding box outside the image, [0, 1]
     double distance_m = 0;          ///< camera centre -> box centre (m)
 
+    /// Fraction of the covered pixels where the box is seen, [0, 1] (0 when not covered): the labels' visibility.
+    double visibleFraction() const { return covered_px > 0 ? double(visible_px) / covered_px : 0.0; }
     /// Fraction of the covered pixels hidden by other boxes or walls, [0, 1] (1 when not covered).
     double occludedFraction() const { return covered_px > 0 ? 1.0 - double(visible_px) / covered_px : 1.0; }
     /// The same when the boxes of ZBufferParams::unhidden_by hid it too.
@@ -38,6 +40,10 @@ struct ZBufferParams {
     double near_plane_m = 0.05;       ///< m
     double wall_depth_margin_m = 0.3; ///< m; box surfaces up to this far behind a wall still count visible
     double max_distance_m = 12.0;     ///< boxes and walls farther than this are ignored (m)
+    /// Walls along every pixel's own ray (exact for tilted and rolled cameras, one ray cast per
+    /// pixel) instead of once per column along the column's ray at the principal row (exact for
+    /// level cameras; the mapper's and the simulator's).
+    bool walls_per_pixel = false;
     /// Optional, one entry per box: boxes with the same group id >= 0 do not occlude each other
     /// (BoxView::visible_px counts a pixel where a box of its own group is front-most). Used for
     /// boxes that intersect: distinct objects cannot interpenetrate, so they are estimates of one

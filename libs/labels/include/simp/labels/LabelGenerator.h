@@ -21,14 +21,14 @@
 
 namespace simp::labels {
 
-/// Visibility settings (camera::rayCastVisibility() on the floor plan's walls; doors hide nothing,
-/// camera/Occluders.h).
+/// Visibility settings (camera::ZBufferRenderer on the floor plan's walls, per pixel; doors hide
+/// nothing, camera/Occluders.h).
 struct VisibilityOptions {
-    int pixel_step = 4;                  ///< one ray every pixel_step px in u and v
+    int pixel_step = 4;                  ///< visibility rendered at one pixel per pixel_step x pixel_step image pixels
     double occupied_threshold = 1.0 - camera::floorplan::kWallMaxFree;  ///< cells with occupancy (1 - P(free)) >= this are walls
     bool ignore_object_cells = true;     ///< cells under an object's footprint (+ margin) are not walls
     double object_cell_margin_m = 0.10;  ///< margin around the footprint for ignore_object_cells (m)
-    double max_range_m = 30.0;           ///< rays stop here
+    double max_range_m = 30.0;           ///< boxes and walls farther than this are not rendered (m)
 };
 
 /// Settings, section [simp-labels] of an .ini (key = field name; visibility keys prefixed "visibility_").
