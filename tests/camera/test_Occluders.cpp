@@ -158,3 +158,23 @@ TEST(Occluders, ZBufferUnhiddenByIsOneWay) {
     EXPECT_EQ(unhidden[0].visible_px, plain[0].visible_px);
     EXPECT_EQ(unhidden[0].unhidden_px, 0);
 }
+
+TEST(Occluders, AHugeImageIsRenderedWithinTheBufferBound) {
+    // A camera whose image (60000 x 45000 px, the same field of view) would need 2.7e9 z-buffer
+    // pixels at downscale 1: rendered coarser, within kMaxRenderedPixels, with the same answer.
+    PinholeCamera huge = forwardCamera();
+    const double k = 60000.0 / huge.widthPx();
+    huge.intrinsics.ncols = 60000;
+    huge.intrinsics.nrows = 45000;
+    huge.intrinsics.setIntrinsicParamsFromValues(huge.fx() * k, huge.fy() * k, huge.cx() * k, huge.cy() * k);
+    ZBufferParams p;
+    p.downscale = 1;
+    const std::vector<char> occ{0, 1};
+    p.occludes = &occ;
+    ZBufferRenderer r;
+    std::vector<BoxView> v;
+    r.render(huge, kDoorAndCabinet, nullptr, p, v);
+    ASSERT_GT(v[1].covered_px, 0);
+    EXPECT_LE(v[0].covered_px, kMaxRenderedPixels);
+    EXPECT_EQ(v[1].visible_px, v[1].covered_px);  // the door hides nothing, as at any size
+}

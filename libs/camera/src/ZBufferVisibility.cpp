@@ -99,7 +99,11 @@ void ZBufferRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int obje
 
 void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometry::Box3D>& boxes,
                              const FloorPlanGrid* walls, const ZBufferParams& prm, std::vector<BoxView>& out) {
-    const int ds = std::max(1, prm.downscale);
+    int ds = std::max(1, prm.downscale);
+    const auto pixelsAt = [&](int d) {
+        return static_cast<long>((cam.widthPx() + d - 1) / d) * static_cast<long>((cam.heightPx() + d - 1) / d);
+    };
+    while (pixelsAt(ds) > kMaxRenderedPixels) ++ds;  // memory bounded whatever the image size
     m_w = (cam.widthPx() + ds - 1) / ds;
     m_h = (cam.heightPx() + ds - 1) / ds;
     const std::size_t npx = static_cast<std::size_t>(m_w) * m_h;

@@ -35,8 +35,13 @@ struct BoxView {
     }
 };
 
+/// Most pixels a z-buffer holds (2048 x 2048; about 100 MB of buffers). A camera whose image at
+/// `downscale` would need more is rendered at the smallest coarser downscale that fits, so that an
+/// image size read from a file (up to obs::limits::kMaxImageSide_px per side) cannot exhaust memory.
+inline constexpr long kMaxRenderedPixels = 2048L * 2048L;
+
 struct ZBufferParams {
-    int downscale = 8;                ///< image pixels per z-buffer pixel (per side)
+    int downscale = 8;                ///< image pixels per z-buffer pixel (per side); coarser when needed (kMaxRenderedPixels)
     double near_plane_m = 0.05;       ///< m
     double wall_depth_margin_m = 0.3; ///< m; box surfaces up to this far behind a wall still count visible
     double max_distance_m = 12.0;     ///< boxes and walls farther than this are ignored (m)
