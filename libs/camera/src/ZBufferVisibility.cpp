@@ -118,32 +118,26 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
     const Eigen::Vector3d t_wc = cam.world_T_camera.translation();
     const Eigen::Isometry3d camera_T_world = cam.world_T_camera.inverse();
 
-    // Walls: per z-buffer column, the horizontal distance to the first wall along the column's
-    // ray at the principal row; per pixel the camera depth at that horizontal distance.
-    if (walls != nullptr && !walls->empty() && prm.walls_per_pixel) {
-        for (int y = 0; y < m_h; ++y)
-            for (int x = 0; x < m_w; ++x) {
-                const double xn = ((x + 0.5) * ds - cam.cx()) / cam.fx(), yn = ((y + 0.5) * ds - cam.cy()) / cam.fy();
-                const Eigen::Vector3d d = R_wc * Eigen::Vector3d(xn, yn, 1.0);  // camera depth z = 1
-                const double h = d.head<2>().norm();
-                if (h < 1e-9) continue;
-                const double r = walls->castRay(t_wc.head<2>(), d.head<2>(), prm.max_distance_m);
-                if (std::isfinite(r)) m_depth[y * m_w + x] = static_cast<float>(r / h + prm.wall_depth_margin_m);
-            }
-    } else if (walls != nullptr && !walls->empty()) {
+    // Walls: the horizontal distance to the first wall along each pixel's own ray
+    // (walls_per_pixel), or along its column's ray at the principal row (one cast per column); per
+    // pixel the camera depth at that horizontal distance.
+    if (walls != nullptr && !walls->empty()) {
         for (int x = 0; x < m_w; ++x) {
             const double xn = ((x + 0.5) * ds - cam.cx()) / cam.fx();
-            const Eigen::Vector3d d_col = R_wc * Eigen::Vector3d(xn, 0.0, 1.0);
-            const Eigen::Vector2d h_col = d_col.head<2>();
-            if (h_col.norm() < 1e-9) continue;
-            const double r = walls->castRay(t_wc.head<2>(), h_col, prm.max_distance_m);
-            if (!std::isfinite(r)) continue;
+            double r_column = 0;
+            if (!prm.walls_per_pixel) {
+                const Eigen::Vector2d h_col = (R_wc * Eigen::Vector3d(xn, 0.0, 1.0)).head<2>();
+                if (h_col.norm() < 1e-9) continue;
+                r_column = walls->castRay(t_wc.head<2>(), h_col, prm.max_distance_m);
+                if (!std::isfinite(r_column)) continue;
+            }
             for (int y = 0; y < m_h; ++y) {
                 const double yn = ((y + 0.5) * ds - cam.cy()) / cam.fy();
                 const Eigen::Vector3d d = R_wc * Eigen::Vector3d(xn, yn, 1.0);  // camera depth z = 1
                 const double h = d.head<2>().norm();
                 if (h < 1e-9) continue;
-                m_depth[y * m_w + x] = static_cast<float>(r / h + prm.wall_depth_margin_m);
+                const double r = prm.walls_per_pixel ? walls->castRay(t_wc.head<2>(), d.head<2>(), prm.max_distance_m) : r_column;
+                if (std::isfinite(r)) m_depth[y * m_w + x] = static_cast<float>(r / h + prm.wall_depth_margin_m);
             }
         }
     }
