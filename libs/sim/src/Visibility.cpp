@@ -21,6 +21,13 @@ void rangeOf(const VisibilityParams& p, const std::string& name, double& lo, dou
     if (ku < p.max_range_m.size() && p.max_range_m[ku] > 0) hi = p.max_range_m[ku];
 }
 
+/// Whether an object hides what lies behind it, by its class (camera::occludingClasses of the
+/// world's class names); an object of an unknown class id occludes.
+bool objectOccludes(const world::MapObject& o, const std::vector<char>& class_occludes) {
+    return o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= class_occludes.size() ||
+           class_occludes[static_cast<std::size_t>(o.class_id)] != 0;
+}
+
 }  // namespace
 
 bool imageBoxOf(const camera::PinholeCamera& view, const geometry::Box3D& box_in_camera, obs::ImageBox2D& box_2d) {
@@ -46,11 +53,10 @@ double insideCornerFraction(const camera::PinholeCamera& view, const geometry::B
 camera::FloorPlanGrid cameraWalls(const mrpt::maps::COccupancyGridMap2D& floorplan, const std::vector<world::MapObject>& objects,
                                   const std::vector<std::string>& class_names, double self_margin_m) {
     camera::FloorPlanGrid walls(floorplan);
+    const std::vector<char> class_occludes = camera::occludingClasses(class_names);
     std::vector<geometry::Box3D> furniture;
-    for (const auto& o : objects) {
-        const bool named = o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < class_names.size();
-        if (camera::occludes(named ? class_names[static_cast<std::size_t>(o.class_id)] : "")) furniture.push_back(o.box);
-    }
+    for (const auto& o : objects)
+        if (objectOccludes(o, class_occludes)) furniture.push_back(o.box);
     walls.clearWallsUnder(furniture, self_margin_m);
     return walls;
 }
@@ -61,13 +67,13 @@ std::vector<VisibleObject> SceneVisibility::visible(const camera::PinholeCamera&
     const Eigen::Vector2d cam = view.world_T_camera.translation().head<2>();
     double global_max = p.default_max_range_m;
     for (double m : p.max_range_m) global_max = std::max(global_max, m);
+    const std::vector<char> class_occludes = camera::occludingClasses(class_names);
     m_boxes.clear(), m_occludes.clear(), m_index.clear();
     for (std::size_t i = 0; i < objects.size(); ++i) {  // every box near enough to be seen or to hide one
         const auto& o = objects[i];
         if ((o.box.center.head<2>() - cam).norm() - 0.5 * o.box.size.head<2>().norm() > global_max) continue;
-        const bool named = o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < class_names.size();
         m_boxes.push_back(o.box);
-        m_occludes.push_back(camera::occludes(named ? class_names[static_cast<std::size_t>(o.class_id)] : "") ? 1 : 0);
+        m_occludes.push_back(objectOccludes(o, class_occludes) ? 1 : 0);
         m_index.push_back(i);
     }
     camera::ZBufferParams z;
