@@ -16,6 +16,8 @@
 #include <simp/obs/ObjectClasses.h>
 
 #include <cmath>
+#include <memory>
+#include <optional>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -135,23 +137,42 @@ TEST(ObjectMcl, PruningNeverTeleportsWeight) {
     EXPECT_GT(in_cluster / total, 0.999);
 }
 
-TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
-    // The synthetic scenario's frames up to t = 20 s, then (without an odometry jump) the frames from
-    // t = 30 s on: the robot was carried about the distance it drives in 10 s.
-    const Scenario& sc = sharedScenario();
-    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
-    LocalizerOptions opts;
+namespace {
+
+/// The synthetic scenario's kidnap: its frames up to t = 20 s (before `cut`), then, without an
+/// odometry jump, those from t = 30 s (`resume`) on: the robot was carried about the distance it
+/// drives in 10 s.
+struct KidnapCut {
+    std::size_t cut = 0, resume = 0;
+};
+
+KidnapCut kidnapCut(const RawlogSequence& seq) {
+    const double t0 = seq.frames.front().t_s;
+    KidnapCut k;
+    while (seq.frames[k.cut].t_s - t0 < 20.0) ++k.cut;
+    k.resume = k.cut;
+    while (seq.frames[k.resume].t_s - t0 < 30.0) ++k.resume;
+    return k;
+}
+
+/// The kidnap tests' localizer on the scenario: 2000 particles, pruned particles dropped, seed 7, searching.
+std::unique_ptr<Localizer> kidnapLocalizer(const Scenario& sc, LocalizerOptions opts) {
     opts.experiment.particles_count = 2000;
     opts.experiment.filter.prune_keeps_weight = false;
-    auto map = makeMap(sc.world);
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
-    Localizer loc(map, sc.world.floorplan, opts);
-    loc.startGlobal();
-    const double t0 = seq.frames.front().t_s;
-    std::size_t cut = 0, resume = 0;
-    while (seq.frames[cut].t_s - t0 < 20.0) ++cut;
-    resume = cut;
-    while (seq.frames[resume].t_s - t0 < 30.0) ++resume;
+    auto loc = std::make_unique<Localizer>(makeMap(sc.world), sc.world.floorplan, opts);
+    loc->startGlobal();
+    return loc;
+}
+
+}  // namespace
+
+TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
+    const Scenario& sc = sharedScenario();
+    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
+    const auto [cut, resume] = kidnapCut(seq);
+    auto owned = kidnapLocalizer(sc, LocalizerOptions{});
+    Localizer& loc = *owned;
     const double jump = translationError(sc.groundtruth[cut].pose, sc.groundtruth[resume].pose);
     ASSERT_GT(jump, 1.0);
     StepRecord rec;
@@ -174,6 +195,55 @@ TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
     EXPECT_LE(lost_after, 5.0);
     EXPECT_GE(localized_after, 0.0) << "never localized again";
     EXPECT_LE(localized_after, 20.0);
+}
+
+namespace {
+
+/// The kidnap of KidnappedRobotIsLostThenLocalizedAgain with `lost_detection_power`: over the
+/// `lost` updates whose detections the filter's own set weighed (nothing pruned, injected or
+/// resampled in between), the largest relative change of its effective sample size before
+/// resampling (0: the detections changed no weight).
+double largestEssChangeWhileLost(double lost_detection_power, std::size_t& lost_updates) {
+    const Scenario& sc = sharedScenario();
+    const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
+    const auto [cut, resume] = kidnapCut(seq);
+    LocalizerOptions opts;
+    opts.experiment.lost_detection_power = lost_detection_power;
+    auto owned = kidnapLocalizer(sc, opts);
+    Localizer& loc = *owned;
+    for (std::size_t f = 0; f < cut; ++f) loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
+    EXPECT_EQ(loc.state(), LocalizationState::Localized);
+    double largest = 0, previous = -1;
+    lost_updates = 0;
+    for (std::size_t f = resume; f < seq.frames.size(); ++f) {
+        const auto before = loc.state();
+        const auto rec = loc.step(seq.frames[f].t_s, f == resume ? mrpt::poses::CPose2D() : seq.frames[f].odometry_increment,
+                                  *seq.frames[f].observations);
+        if (!rec.updated) continue;
+        // Weighed in `lost` (the state before the step's update), nothing else moved a weight.
+        const bool clean = before == LocalizationState::Lost && rec.detections > 0 && rec.pruned == 0 && rec.injected == 0;
+        if (clean && previous > 0) {
+            ++lost_updates;
+            largest = std::max(largest, std::abs(rec.ess - previous) / previous);
+        }
+        // The weights carry over only when the set was not resampled (ESS above MRPT's BETA).
+        previous = clean && rec.ess > loc.options().pf.BETA * static_cast<double>(rec.particles) ? rec.ess : -1;
+    }
+    return largest;
+}
+
+}  // namespace
+
+TEST(Localizer, WhileLostTheOwnSetWeighsDetectionsWithTheLostPower) {
+    // Kidnapped, the set explains next to nothing of what it sees (every particle scores about eta),
+    // so even fully weighed the detections change its weights only slightly; at power 0 not at all.
+    std::size_t updates_full = 0, updates_none = 0;
+    const double full = largestEssChangeWhileLost(1.0, updates_full);
+    const double none = largestEssChangeWhileLost(0.0, updates_none);
+    ASSERT_GT(updates_full, 3u);
+    ASSERT_GT(updates_none, 3u);
+    EXPECT_GT(full, 1e-5);
+    EXPECT_LT(none, 1e-12);
 }
 
 TEST(FitWindow, CountsObjectsOnceWithAnObjectRadius) {

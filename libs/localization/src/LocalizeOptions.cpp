@@ -46,6 +46,8 @@ const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
                     "floor on the reported cluster's per-axis position std: a tighter set is widened (0 = off, simp-paper.ini)")
             .number("min_spread_phi_rad", &O::min_spread_phi_rad, "rad", ValueRange::between(0, M_PI),
                     "floor on the reported cluster's heading std (0 = off)")
+            .number("lost_detection_power", &O::lost_detection_power, "", ValueRange::fraction(),
+                    "while lost, the filter's own set weighs the detections with this exponent (the challenger's fully); 1 = as always")
             .choice("report_from", &O::report_from,
                     std::vector<std::pair<std::string, ReportFrom>>{{"localized", ReportFrom::Localized}, {"start", ReportFrom::Start}},
                     "first line of `estimate.tum`: first step in state localized, or first frame")

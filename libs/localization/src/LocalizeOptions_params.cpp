@@ -49,7 +49,7 @@ const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable() {
                      "a track is unmapped (its detections not scored) after this many judged detections ...; 0 = off")
             .number("unmapped_min_span_s", &O::unmapped_min_span_s, "s", ValueRange::nonNegative(), "... over at least this time ...")
             .number("unmapped_max_explained", &O::unmapped_max_explained, "", ValueRange::fraction(), "... of which the estimate explained at most this fraction")
-            .number("unmapped_min_fit", &O::unmapped_min_fit, "", ValueRange::fraction(), "judged only while localized with at least this fit ...")
+            .number("unmapped_min_fit", &O::unmapped_min_fit, "", ValueRange::fraction(), "judged only while localized with at least this fit (over fit_min_detections) ...")
             .flag("unmapped_while_lost", &O::unmapped_while_lost, "... or also while lost with that fit")
             .number("unmapped_tolerance_m", &O::unmapped_tolerance_m, "m", ValueRange::nonNegative(), "... at the estimate or a pose this close to it")
             .number("unmapped_tolerance_rad", &O::unmapped_tolerance_rad, "rad", ValueRange::nonNegative(), "... and turned this little from it");

@@ -257,7 +257,8 @@ void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::pose
         mcl.predict(acts ? &*acts : nullptr, pf);
         injectFromDetections(mcl, state, observations);
         if (&mcl == m_mcl.get()) injectAboutLocalTarget(mcl, motion);
-        mcl.weigh(observations, pf.powFactor);
+        const bool own_lost = &mcl == m_mcl.get() && state == LocalizationState::Lost;
+        mcl.weigh(observations, own_lost ? pf.powFactor * m_opts.experiment.lost_detection_power : pf.powFactor);
         if (m_scan_model && m_pending_scan) {
             mcl.weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
         }

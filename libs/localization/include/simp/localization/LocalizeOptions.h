@@ -61,6 +61,11 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     /// never leave (doc/localization.md "Spread floor"). 0 = off (the paper, simp-paper.ini).
     double min_spread_xy_m = 0.13;
     double min_spread_phi_rad = 0.06;
+    /// While `lost`, the filter's own set weighs the detections with this exponent (times
+    /// [PF_options] powFactor); the challenger's set (the search) weighs them fully. A `lost` is
+    /// mostly false (changed furniture fills the window) and its detections pull a right set away;
+    /// after a true one the challenger, not the set, finds the place. 1 = as always (the paper).
+    double lost_detection_power = 0.5;
     ReportFrom report_from = ReportFrom::Localized;  ///< first line of estimate.tum
     bool write_particles = true;          ///< write O/final_particles.txt
     bool write_png = true;                ///< write O/trajectory.png
