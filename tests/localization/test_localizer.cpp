@@ -17,7 +17,6 @@
 
 #include <cmath>
 #include <memory>
-#include <optional>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
