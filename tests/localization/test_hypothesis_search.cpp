@@ -220,6 +220,28 @@ TEST(StateMonitor, EnteringLocalizedIsStricterThanStayingWithAnEntryMargin) {
     EXPECT_EQ(m_off.state(), LocalizationState::Localized);
 }
 
+TEST(StateMonitor, AnEntryMinimumOffsetLetsABetterPoseCloseByThrough) {
+    StateParams p;
+    p.local_margin = 10.0;
+    p.local_entry_margin = 3.0;
+    p.local_entry_min_offset_m = 0.2;
+    FitWindow::Fit close{0.9, 10, 1.0, p.lost_window};
+    close.local_gain = 0.5 * (p.local_entry_margin + p.local_margin);  // blocks entry by its gain ...
+    close.local_offset_m = 0.5 * p.local_entry_min_offset_m;          // ... but is the same place
+    FitWindow::Fit apart = close;
+    apart.local_offset_m = 2.0 * p.local_entry_min_offset_m;
+    StateMonitor m(p);
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m.update(0.95, 0.1, apart, true), LocalizationState::Global);
+    for (std::size_t i = 0; i + 1 < p.localized_min_updates; ++i)
+        EXPECT_EQ(m.update(0.95, 0.1, close, true), LocalizationState::Global);
+    EXPECT_EQ(m.update(0.95, 0.1, close, true), LocalizationState::Localized);
+    // 0: any better pose blocks, however close
+    StateParams off = p;
+    off.local_entry_min_offset_m = 0;
+    StateMonitor m_off(off);
+    for (int i = 0; i < 10; ++i) EXPECT_EQ(m_off.update(0.95, 0.1, close, true), LocalizationState::Global);
+}
+
 TEST(DetectionPoseSampler, PairFitsPlaceTheFrameFromTwoDetectionsWithoutTheirYaw) {
     const SearchWorld sw;
     const auto& [w, map, free_space, sampler] = sw;

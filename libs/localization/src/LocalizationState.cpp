@@ -175,7 +175,7 @@ LocalizationState StateMonitor::update(double cluster_weight, double cluster_std
     if (!had_detections) return m_state;  // nothing new to decide on
     const bool ambiguous = fit.rival_advantage > -m_params.rival_margin;  // false for NaN (not searched)
     const bool good = fit_known && !ambiguous && !betterPoseNearby(fit, m_params.local_margin) &&
-                      !betterPoseNearby(fit, m_params.local_entry_margin) && fit.fraction >= m_params.localized_min_fit &&
+                      !betterPoseApart(fit, m_params.local_entry_margin, m_params.local_entry_min_offset_m) && fit.fraction >= m_params.localized_min_fit &&
                       cluster_weight >= m_params.localized_min_weight && cluster_std_m <= m_params.localized_max_std_m;
     m_good_updates = good ? m_good_updates + 1 : 0;
     if (m_good_updates >= m_params.localized_min_updates) m_state = LocalizationState::Localized;

@@ -30,6 +30,7 @@ const io::OptionTable<StateParams>& stateParamsTable() {
             .number("object_radius_m", &O::object_radius_m, "m", ValueRange::nonNegative(), "> 0: the window counts objects of this radius, not detections")
             .number("local_margin", &O::local_margin, "nats", ValueRange::nonNegative(), "> 0: a pose near the estimate that explains the window better by this: not localized (and, until first localized, resetting about it); 0 = off")
             .number("local_entry_margin", &O::local_entry_margin, "nats", ValueRange::nonNegative(), "> 0: entering localized also needs no pose near the estimate better by this (stricter than local_margin); 0 = local_margin")
+            .number("local_entry_min_offset_m", &O::local_entry_min_offset_m, "m", ValueRange::nonNegative(), "... a pose farther than this from the estimate only (closer: the same place refined); 0 = any")
             .rule("fit_min_detections", [](const O& o) { return o.fit_min_detections <= o.fit_window; }, "be <= fit_window")
             .rule("lost_window", [](const O& o) { return o.lost_window <= o.fit_window; }, "be <= fit_window")
             .rule("lost_max_fit", [](const O& o) { return o.lost_max_fit < o.localized_min_fit; }, "be smaller than localized_min_fit");

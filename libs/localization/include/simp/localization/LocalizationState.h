@@ -60,6 +60,9 @@ struct StateParams {
     /// window prefers is not reported as localized. 0: entering uses local_margin too. While lost the
     /// climb runs only for this test.
     double local_entry_margin = 3.0;
+    /// ... but only a pose farther than this (m): one closer is the same place refined, within the
+    /// set's own spread and the 0.3 m an estimate may be off. 0: any pose the climb finds.
+    double local_entry_min_offset_m = 0.2;
 };
 
 /// The last detections with the odometry pose of their frame, scored at a pose estimate.
@@ -141,6 +144,10 @@ class FitWindow {
 /// The climb found a pose near the estimate that explains the window better by `margin` nats
 /// (false for margin 0 = off, and when the climb did not run: NaN gain).
 inline bool betterPoseNearby(const FitWindow::Fit& fit, double margin) { return margin > 0 && fit.local_gain >= margin; }
+/// The same, for a better pose farther than `min_offset_m` from the estimate only.
+inline bool betterPoseApart(const FitWindow::Fit& fit, double margin, double min_offset_m) {
+    return betterPoseNearby(fit, margin) && !(fit.local_offset_m <= min_offset_m);
+}
 
 /// The state machine: feed it after every filter update.
 class StateMonitor {
