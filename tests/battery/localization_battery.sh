@@ -7,6 +7,8 @@
 # localized with every CONFIG (5000 particles, localization seeds $LOC_SEEDS), on the ground-truth
 # map (GT) and, with BUILT=1, on a map built by simp-map from a coverage run (BUILT). Prints the
 # tables of tests/battery/analyze_runs.py. Runs $JOBS processes at once. Same inputs, same output.
+# SIM_CONFIG: a simp-sim .ini for the tracking and kidnapped sequences (e.g. exact odometry,
+# `[odometry] noise_scale = 0`); sequences already in OUT are reused, so give it an OUT of its own.
 set -euo pipefail
 OUT=${1:?usage: localization_battery.sh OUT CONFIG [CONFIG ...]}; shift
 CONFIGS=("$@")
@@ -20,6 +22,8 @@ PARTICLES=${PARTICLES:-5000}
 JOBS=${JOBS:-2}
 BUILT=${BUILT:-0}
 MAPPING=${MAPPING:-config_ini/mapping.ini}  # the [mapping] config of the BUILT maps
+SIM_CONFIG=${SIM_CONFIG:-}                  # simp-sim --config of the tracking and kidnapped sequences
+SIM_OPTS=${SIM_CONFIG:+--config $SIM_CONFIG}
 AUTHORS=${AUTHORS:-../shared/data/simp-office}
 mkdir -p "$OUT"
 worlds=()
@@ -45,13 +49,13 @@ for w in "${worlds[@]}"; do
   for ch in 0.15 0.30; do
     for s in $SEQ_SEEDS; do
       Q="$OUT/q_${w}_c${ch}_s$s"
-      [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed $s --out $Q --duration $DURATION --changes $ch >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
+      [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed $s --out $Q --duration $DURATION --changes $ch $SIM_OPTS >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
       seqs+=("$Q")
     done
   done
   for s in $KIDNAP_SEEDS; do
     Q="$OUT/k_${w}_s$s"
-    [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed $((s + 100)) --out $Q --duration $DURATION --changes 0.15 --kidnap-at $((DURATION / 2)) >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
+    [ -f "$Q/sequence.rawlog" ] || echo "$B/simp-sim sequence --world $W --seed $((s + 100)) --out $Q --duration $DURATION --changes 0.15 --kidnap-at $((DURATION / 2)) $SIM_OPTS >/dev/null 2>&1" >> "$OUT/sim_jobs.txt"
     seqs+=("$Q")
   done
   maps=("GT:$W")
