@@ -8,7 +8,8 @@
 # map (GT) and, with BUILT=1, on a map built by simp-map from a coverage run (BUILT). Prints the
 # tables of tests/battery/analyze_runs.py. Runs $JOBS processes at once. Same inputs, same output.
 # SIM_CONFIG: a simp-sim .ini for the tracking and kidnapped sequences (e.g. exact odometry,
-# `[odometry] noise_scale = 0`); sequences already in OUT are reused, so give it an OUT of its own.
+# `[odometry] noise_scale = 0`); sequences already in OUT are reused, so an OUT keeps the SIM_CONFIG
+# it was first simulated with (OUT/sim_config.stamp, its text) and refuses another one.
 set -euo pipefail
 OUT=${1:?usage: localization_battery.sh OUT CONFIG [CONFIG ...]}; shift
 CONFIGS=("$@")
@@ -26,6 +27,14 @@ SIM_CONFIG=${SIM_CONFIG:-}                  # simp-sim --config of the tracking 
 SIM_OPTS=${SIM_CONFIG:+--config $SIM_CONFIG}
 AUTHORS=${AUTHORS:-../shared/data/simp-office}
 mkdir -p "$OUT"
+if [ -n "$SIM_CONFIG" ] && [ ! -f "$SIM_CONFIG" ]; then echo "error: SIM_CONFIG '$SIM_CONFIG': no such file" >&2; exit 2; fi
+sim_text=$([ -n "$SIM_CONFIG" ] && cat "$SIM_CONFIG" || true)
+if [ -f "$OUT/sim_config.stamp" ]; then
+  [ "$(cat "$OUT/sim_config.stamp")" = "$sim_text" ] || {
+    echo "error: $OUT was simulated with another SIM_CONFIG ($OUT/sim_config.stamp); give this one an OUT of its own" >&2; exit 2; }
+else
+  printf '%s' "$sim_text" > "$OUT/sim_config.stamp"
+fi
 worlds=()
 if [ -d "$AUTHORS" ]; then
   [ -d "$OUT/w_authors" ] || "$B/simp-import-map" --simp-dir "$AUTHORS" --out "$OUT/w_authors" >/dev/null
