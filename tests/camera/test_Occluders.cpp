@@ -43,11 +43,49 @@ std::pair<std::vector<BoxView>, std::vector<BoxView>> perColumnAndPerPixel(const
 
 }  // namespace
 
-TEST(Occluders, OnlyDoorsAreSeeThrough) {
+TEST(Occluders, OnlyDoorsAreSeeThroughAndOnlyTablesOpenBelow) {
     EXPECT_FALSE(occludes("door"));
     EXPECT_TRUE(occludes("cabinet"));
+    EXPECT_TRUE(occludes("table"));
     EXPECT_TRUE(occludes(""));
-    EXPECT_EQ(occludingClasses({"sink", "door", "chair"}), (std::vector<char>{1, 0, 1}));
+    EXPECT_EQ(occlusionOf("table"), kOpenBelow);
+    EXPECT_EQ(occlusionOf("desk"), kSolid);
+    EXPECT_EQ(occludingClasses({"sink", "door", "chair", "table"}), (std::vector<char>{1, 0, 1, 2}));
+}
+
+TEST(Occluders, ZBufferSeesDrawersUnderATableAndHidesBehindItsTop) {
+    // A 0.75 m table 2 m ahead of the 0.63 m camera; drawers (0.6 m) under it, and a tall cabinet
+    // behind it. Solid, the table hides the drawers completely; open below, the drawers are seen
+    // whole (the camera is below the top), the cabinet is hidden only where the top is in front,
+    // and the table itself is as visible as a solid one.
+    const std::vector<simp::geometry::Box3D> boxes{makeUprightBox({2.0, 0, 0.375}, {0.8, 1.6, 0.75}, 0.0),
+                                                   makeUprightBox({2.0, 0.3, 0.3}, {0.5, 0.4, 0.6}, 0.0),
+                                                   makeUprightBox({3.5, 0, 0.9}, {0.5, 0.8, 1.8}, 0.0)};
+    ZBufferParams p;
+    p.downscale = 2;
+    ZBufferRenderer r;
+    std::vector<BoxView> solid, open;
+    const std::vector<char> all_solid{kSolid, kSolid, kSolid}, table_open{kOpenBelow, kSolid, kSolid};
+    p.occludes = &all_solid;
+    r.render(forwardCamera(), boxes, nullptr, p, solid);
+    p.occludes = &table_open;
+    r.render(forwardCamera(), boxes, nullptr, p, open);
+    ASSERT_GT(solid[1].covered_px, 100);
+    EXPECT_EQ(solid[1].visible_px, 0);
+    EXPECT_EQ(open[1].visible_px, open[1].covered_px);
+    EXPECT_EQ(open[0].visible_px, solid[0].visible_px);
+    EXPECT_EQ(open[0].covered_px, solid[0].covered_px);
+    // The cabinet: hidden by the whole table's silhouette when solid, by the top only when open.
+    EXPECT_GT(open[2].visible_px, solid[2].visible_px);
+    EXPECT_LT(open[2].visible_px, open[2].covered_px);
+    // The top hides what is behind it at its height: a box on the table's far side at 0.7 m.
+    const std::vector<simp::geometry::Box3D> behind_top{boxes[0], makeUprightBox({3.0, 0, 0.7}, {0.2, 0.2, 0.08}, 0.0)};
+    const std::vector<char> occ{kOpenBelow, kSolid};
+    p.occludes = &occ;
+    std::vector<BoxView> v;
+    r.render(forwardCamera(), behind_top, nullptr, p, v);
+    ASSERT_GT(v[1].covered_px, 0);
+    EXPECT_EQ(v[1].visible_px, 0);
 }
 
 TEST(Occluders, ZBufferSeesThroughADoor) {

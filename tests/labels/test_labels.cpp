@@ -1,6 +1,7 @@
 /// Tests of the label generation (paper Sec. "Label Generation for 3D Object Detection") on a scene
-/// made here: a camera at 1 m looking along world +x, a table in front of a chair (occlusion), a
-/// board half outside the image (truncation), a chair behind a wall of the floor plan.
+/// made here: a camera at 1 m looking along world +x, a cabinet in front of a chair (occlusion; a
+/// table would hide only with its top, camera/Occluders.h), a board half outside the image
+/// (truncation), a chair behind a wall of the floor plan.
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>
 #include <simp/camera/ZBufferVisibility.h>
@@ -46,10 +47,10 @@ world::MapObject object(int id, int cls, const Eigen::Vector3d& c, const Eigen::
     return o;
 }
 
-/// chair A (hidden by table B), table B, board C (centre on the left image border), chair D behind a wall.
+/// chair A (hidden by cabinet B), cabinet B, board C (centre on the left image border), chair D behind a wall.
 world::World scene() {
     world::World w;
-    w.objects.class_names = {"chair", "table", "board"};
+    w.objects.class_names = {"chair", "cabinet", "board"};
     w.objects.class_noise.assign(3, std::nullopt);
     w.objects.objects = {object(1, 0, {4.0, 0.0, 0.5}, {0.6, 0.6, 1.0}, 0.3),
                          object(2, 1, {3.0, 0.0, 0.5}, {0.8, 0.8, 1.0}, 0.0),
@@ -80,9 +81,9 @@ const labels::LabelAnnotation* annotationOf(const labels::LabelSet& s, std::int6
 std::vector<labels::Detection2D> detectionsFor(const world::World& w, const labels::PosedImage& im) {
     const auto pb = camera::projectBox(im.camera, w.objects.objects[1].box);
     const auto pc = camera::projectBox(im.camera, w.objects.objects[2].box);
-    return {{7, "table", pb.bbox_trunc(0) + 3, pb.bbox_trunc(1) - 2, pb.bbox_trunc(2) + 2, pb.bbox_trunc(3) - 4, 0.9},
+    return {{7, "cabinet", pb.bbox_trunc(0) + 3, pb.bbox_trunc(1) - 2, pb.bbox_trunc(2) + 2, pb.bbox_trunc(3) - 4, 0.9},
             {7, "board", pc.bbox_trunc(0), pc.bbox_trunc(1), pc.bbox_trunc(2), pc.bbox_trunc(3), 0.8},
-            {7, "table", pc.bbox_trunc(0), pc.bbox_trunc(1), pc.bbox_trunc(2), pc.bbox_trunc(3), 0.7},  // wrong class
+            {7, "cabinet", pc.bbox_trunc(0), pc.bbox_trunc(1), pc.bbox_trunc(2), pc.bbox_trunc(3), 0.7},  // wrong class
             {7, "chair", 600, 10, 630, 60, 0.6}};  // nothing there (a person, a closed door...)
 }
 
@@ -91,10 +92,10 @@ std::vector<labels::Detection2D> detectionsFor(const world::World& w, const labe
 TEST(BoxProjection, ReprojectionAndTruncation) {
     const auto im = posedImage();
     const world::World w = scene();
-    const auto& table = w.objects.objects[1].box;
-    const auto p = camera::projectBox(im.camera, table);
+    const auto& cabinet = w.objects.objects[1].box;
+    const auto p = camera::projectBox(im.camera, cabinet);
     EXPECT_TRUE(p.visible_in_front);
-    EXPECT_LT((p.bbox_proj - manualProjection(im, table)).norm(), 1e-9);
+    EXPECT_LT((p.bbox_proj - manualProjection(im, cabinet)).norm(), 1e-9);
     EXPECT_NEAR(p.truncation, 0.0, 1e-12);
     // Board centred on the left border: about half of its projected box is outside.
     const auto q = camera::projectBox(im.camera, w.objects.objects[2].box);
@@ -123,7 +124,7 @@ TEST(Visibility, BoxesAndWallsOcclude) {
     camera::ZBufferRenderer r;
     std::vector<camera::BoxView> with_walls, no_walls;
     r.render(im.camera, boxes, &walls, p, with_walls);
-    EXPECT_LT(with_walls[0].visibleFraction(), 0.1) << "chair behind the table";
+    EXPECT_LT(with_walls[0].visibleFraction(), 0.1) << "chair behind the cabinet";
     EXPECT_DOUBLE_EQ(with_walls[1].visibleFraction(), 1.0);
     EXPECT_DOUBLE_EQ(with_walls[2].visibleFraction(), 1.0);
     EXPECT_DOUBLE_EQ(with_walls[3].visibleFraction(), 0.0) << "chair behind the wall";
@@ -132,8 +133,8 @@ TEST(Visibility, BoxesAndWallsOcclude) {
 }
 
 TEST(Visibility, DoorsHideNothing) {
-    // An open door 2 m ahead in front of the table (3 m): the labels see the table through it, as
-    // the simulator does (camera/Occluders.h); before, the door box hid the table (visibility 0).
+    // An open door 2 m ahead in front of the cabinet (3 m): the labels see the cabinet through it, as
+    // the simulator does (camera/Occluders.h); before, the door box hid the cabinet (visibility 0).
     const auto im = posedImage();
     world::World w = scene();
     w.objects.class_names.push_back("door");
@@ -142,13 +143,13 @@ TEST(Visibility, DoorsHideNothing) {
     labels::LabelOptions opts;
     opts.keep_unmatched = true;  // annotate every object in view, no 2D detections needed
     const labels::LabelSet s = labels::generateLabels(w.objects, &w.floorplan, {im}, {}, opts);
-    const auto* table = annotationOf(s, 2);
+    const auto* cabinet = annotationOf(s, 2);
     const auto* door = annotationOf(s, 5);
-    ASSERT_NE(table, nullptr);
+    ASSERT_NE(cabinet, nullptr);
     ASSERT_NE(door, nullptr);
-    EXPECT_DOUBLE_EQ(table->visibility, 1.0);
+    EXPECT_DOUBLE_EQ(cabinet->visibility, 1.0);
     EXPECT_DOUBLE_EQ(door->visibility, 1.0);
-    EXPECT_LT(annotationOf(s, 1)->visibility, 0.1) << "the chair is still behind the table";
+    EXPECT_LT(annotationOf(s, 1)->visibility, 0.1) << "the chair is still behind the cabinet";
 }
 
 TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
@@ -183,7 +184,7 @@ TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
         const auto* c = annotationOf(s, 3);
         ASSERT_TRUE(b && c);
         ASSERT_TRUE(b->detection && c->detection);
-        EXPECT_EQ(b->detection->class_name, "table");
+        EXPECT_EQ(b->detection->class_name, "cabinet");
         EXPECT_LT((b->box_cam.center - Eigen::Vector3d(0, 0.5, 3.0)).norm(), 1e-12);
         EXPECT_LT((detector_io::omni3DDimensions(b->box_cam) - Eigen::Vector3d(0.8, 1.0, 0.8)).norm(), 1e-12);
         EXPECT_LT((detector_io::omni3DDimensions(c->box_cam) - Eigen::Vector3d(1.0, 1.0, 0.05)).norm(), 1e-12);
@@ -203,7 +204,7 @@ TEST(LabelsApp, OmniLabelsAgreeWithTheTruth) {
     EXPECT_EQ(j["images"][0]["file_path"], "rgb/000007.png");
     EXPECT_EQ(j["categories"][2]["name"], "board");
     const auto& a = j["annotations"][1];
-    EXPECT_EQ(a["category_name"], "table");
+    EXPECT_EQ(a["category_name"], "cabinet");
     for (const char* key : {"bbox2D_tight", "bbox2D_proj", "bbox2D_trunc", "bbox3D_cam", "center_cam", "dimensions", "R_cam",
                             "truncation", "visibility", "valid3D", "behind_camera"})
         EXPECT_TRUE(a.contains(key)) << key;

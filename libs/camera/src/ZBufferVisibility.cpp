@@ -1,3 +1,4 @@
+#include <simp/camera/Occluders.h>
 #include <simp/camera/ZBufferVisibility.h>
 
 #include <algorithm>
@@ -25,6 +26,19 @@ int clipNear(const Eigen::Vector3d* in, int n, double near, Eigen::Vector3d* out
         }
     }
     return m;
+}
+
+/// The part of an open-below box that hides (Occluders.h): its top kOpenBelowTop_m, along the box
+/// axis closest to the world's vertical.
+geometry::Box3D occludingTopOf(const geometry::Box3D& box) {
+    int up = 0;
+    for (int a = 1; a < 3; ++a)
+        if (std::abs(box.R(2, a)) > std::abs(box.R(2, up))) up = a;
+    geometry::Box3D top = box;
+    const double t = std::min(kOpenBelowTop_m, box.size[up]);
+    top.size[up] = t;
+    top.center += box.R.col(up) * (box.R(2, up) >= 0 ? 1.0 : -1.0) * 0.5 * (box.size[up] - t);
+    return top;
 }
 
 }  // namespace
@@ -55,11 +69,15 @@ void ZBufferRenderer::rasterizePolygon(const Eigen::Vector3d* p, int n, int obje
                 if (!(inv_z > 0)) continue;
                 const float z = static_cast<float>(1.0 / inv_z);
                 const int idx = y * m_w + x;
+                if (m_depth_only) {  // the hiding part of an open-below box
+                    if (z < m_depth[idx]) m_depth[idx] = z, m_id[idx] = object;
+                    continue;
+                }
                 if (m_pass == 1) {  // visibility against the final z-buffer, own group transparent
                     if (m_stamp_visible[idx] == object) continue;
                     m_stamp_visible[idx] = object;
-                    if (seeThrough(object)) {  // in front of every occluder and wall
-                        if (z < m_depth[idx]) ++(*m_out)[object].visible_px;
+                    if (seeThrough(object)) {  // in front of every occluder and wall, or its own top in front
+                        if (z < m_depth[idx] || m_id[idx] == object) ++(*m_out)[object].visible_px;
                         continue;
                     }
                     const int front = m_id[idx];
@@ -146,6 +164,24 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
 
     std::array<Eigen::Vector3d, 8> c_cam;
     std::array<Eigen::Vector3d, 8> face_in, face_clip, face_px;
+    // Rasterizes the faces of `corners_cam` (camera frame) for box k; returns the projected 2D
+    // bounding box (image pixels) through the u/v bounds.
+    const auto rasterizeBox = [&](const std::array<Eigen::Vector3d, 8>& corners_cam, int k, double& u_min, double& u_max,
+                                  double& v_min, double& v_max) {
+        for (const auto& f : kFaces) {
+            for (int i = 0; i < 4; ++i) face_in[i] = corners_cam[f[i]];
+            const int n = clipNear(face_in.data(), 4, prm.near_plane_m, face_clip.data());
+            for (int i = 0; i < n; ++i) {
+                const Eigen::Vector3d& q = face_clip[i];
+                const double u = cam.fx() * q.x() / q.z() + cam.cx();
+                const double v = cam.fy() * q.y() / q.z() + cam.cy();
+                u_min = std::min(u_min, u), u_max = std::max(u_max, u);
+                v_min = std::min(v_min, v), v_max = std::max(v_max, v);
+                face_px[i] = Eigen::Vector3d(u / ds, v / ds, 1.0 / q.z());
+            }
+            if (n >= 3) rasterizePolygon(face_px.data(), n, k);
+        }
+    };
     m_group = prm.group != nullptr && prm.group->size() == boxes.size() ? prm.group : nullptr;
     m_occludes = prm.occludes != nullptr && prm.occludes->size() == boxes.size() ? prm.occludes : nullptr;
     m_unhidden_by = prm.unhidden_by != nullptr && prm.unhidden_by->size() == boxes.size() ? prm.unhidden_by : nullptr;
@@ -169,18 +205,14 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
         }
         if (!any_in_front) continue;
         double u_min = std::numeric_limits<double>::infinity(), v_min = u_min, u_max = -u_min, v_max = -u_min;
-        for (const auto& f : kFaces) {
-            for (int i = 0; i < 4; ++i) face_in[i] = c_cam[f[i]];
-            const int n = clipNear(face_in.data(), 4, prm.near_plane_m, face_clip.data());
-            for (int i = 0; i < n; ++i) {
-                const Eigen::Vector3d& q = face_clip[i];
-                const double u = cam.fx() * q.x() / q.z() + cam.cx();
-                const double v = cam.fy() * q.y() / q.z() + cam.cy();
-                u_min = std::min(u_min, u), u_max = std::max(u_max, u);
-                v_min = std::min(v_min, v), v_max = std::max(v_max, v);
-                face_px[i] = Eigen::Vector3d(u / ds, v / ds, 1.0 / q.z());
-            }
-            if (n >= 3) rasterizePolygon(face_px.data(), n, static_cast<int>(k));
+        rasterizeBox(c_cam, static_cast<int>(k), u_min, u_max, v_min, v_max);
+        if (m_pass == 0 && m_occludes != nullptr && (*m_occludes)[k] == kOpenBelow) {
+            const auto top = occludingTopOf(box).corners();
+            for (int i = 0; i < 8; ++i) c_cam[i] = camera_T_world * top[i];
+            double tu0 = u_min, tu1 = u_max, tv0 = v_min, tv1 = v_max;  // the top's bounds are not the box's
+            m_depth_only = true;
+            rasterizeBox(c_cam, static_cast<int>(k), tu0, tu1, tv0, tv1);
+            m_depth_only = false;
         }
         // Truncation: fraction of the projected 2D bounding box outside the image.
         const double area = (u_max - u_min) * (v_max - v_min);
@@ -190,7 +222,7 @@ void ZBufferRenderer::render(const PinholeCamera& cam, const std::vector<geometr
     }
     if (!per_box_pass)
         for (std::size_t i = 0; i < npx; ++i)
-            if (m_id[i] >= 0) ++out[m_id[i]].visible_px;
+            if (m_id[i] >= 0 && !seeThrough(m_id[i])) ++out[m_id[i]].visible_px;  // an open-below box counted itself in pass 1
     m_pass = 0;
     m_out = nullptr;
     m_occludes = nullptr;

@@ -21,11 +21,12 @@ void rangeOf(const VisibilityParams& p, const std::string& name, double& lo, dou
     if (ku < p.max_range_m.size() && p.max_range_m[ku] > 0) hi = p.max_range_m[ku];
 }
 
-/// Whether an object hides what lies behind it, by its class (camera::occludingClasses of the
-/// world's class names); an object of an unknown class id occludes.
-bool objectOccludes(const world::MapObject& o, const std::vector<char>& class_occludes) {
-    return o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= class_occludes.size() ||
-           class_occludes[static_cast<std::size_t>(o.class_id)] != 0;
+/// How an object hides what lies behind it, by its class (camera::occludingClasses of the world's
+/// class names); an object of an unknown class id is solid.
+char occlusionOfObject(const world::MapObject& o, const std::vector<char>& class_occludes) {
+    return o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= class_occludes.size()
+               ? static_cast<char>(camera::kSolid)
+               : class_occludes[static_cast<std::size_t>(o.class_id)];
 }
 
 }  // namespace
@@ -56,7 +57,7 @@ camera::FloorPlanGrid cameraWalls(const mrpt::maps::COccupancyGridMap2D& floorpl
     const std::vector<char> class_occludes = camera::occludingClasses(class_names);
     std::vector<geometry::Box3D> furniture;
     for (const auto& o : objects)
-        if (objectOccludes(o, class_occludes)) furniture.push_back(o.box);
+        if (occlusionOfObject(o, class_occludes) != camera::kSeeThrough) furniture.push_back(o.box);
     walls.clearWallsUnder(furniture, self_margin_m);
     return walls;
 }
@@ -73,7 +74,7 @@ std::vector<VisibleObject> SceneVisibility::visible(const camera::PinholeCamera&
         const auto& o = objects[i];
         if ((o.box.center.head<2>() - cam).norm() - 0.5 * o.box.size.head<2>().norm() > global_max) continue;
         m_boxes.push_back(o.box);
-        m_occludes.push_back(objectOccludes(o, class_occludes) ? 1 : 0);
+        m_occludes.push_back(occlusionOfObject(o, class_occludes));
         m_index.push_back(i);
     }
     camera::ZBufferParams z;

@@ -54,8 +54,9 @@ struct ZBufferParams {
     /// boxes that intersect: distinct objects cannot interpenetrate, so they are estimates of one
     /// object (or nested objects) and must not hide each other. Costs a second rasterization.
     const std::vector<int>* group = nullptr;
-    /// Optional, one entry per box: 0 = the box is seen but hides nothing (a door, Occluders.h);
-    /// such boxes are rendered a second time against the final z-buffer.
+    /// Optional, one entry per box, an OcclusionKind (Occluders.h): kSolid (1) hides with the whole
+    /// box; kSeeThrough (0, a door) is seen but hides nothing; kOpenBelow (2, a table) hides only
+    /// with its top. Boxes not solid are rendered a second time against the final z-buffer.
     const std::vector<char>* occludes = nullptr;
     /// Optional, one entry per box: the boxes (indices, sorted) that do not hide it, where it is
     /// not behind a wall (BoxView::visible_px counts a pixel where one of them is front-most). A
@@ -75,7 +76,9 @@ class ZBufferRenderer {
 
    private:
     void rasterizePolygon(const Eigen::Vector3d* pts_px_invz, int n, int object);
-    bool seeThrough(int object) const { return m_occludes != nullptr && !(*m_occludes)[static_cast<std::size_t>(object)]; }
+    /// Not a solid box: seen where nothing hides it (or its own top is front-most), hides at most with its top.
+    bool seeThrough(int object) const { return m_occludes != nullptr && (*m_occludes)[static_cast<std::size_t>(object)] != 1; }
+    bool m_depth_only = false;          ///< pass 0, rasterizing the hiding top of an open-below box
     int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility against the final z-buffer
     const std::vector<int>* m_group = nullptr;
     const std::vector<char>* m_occludes = nullptr;
