@@ -137,6 +137,8 @@ const io::OptionTable<MappingOptions>& MappingOptions::table() {
                     "project rule: a built object with fewer than this fraction of a same-class neighbour's detections, inside its noise gate, is its twin; 0 = off")
             .number("twin_min_likelihood", &O::twin_min_likelihood, "", between(0, 1),
                     "project rule: the twin rule's gate, Eq. perclassdist likelihood of the twin's centre under the neighbour's noise")
+            .number("twin_never_active_max_support_ratio", &O::twin_never_active_max_support_ratio, "", between(0, 1),
+                    "project rule: twin_max_support_ratio for a built object never active in the run; 0 = off")
             .flag("remove_class_bias", &O::remove_class_bias, "project addition: map boxes = mean of detections minus the class noise mean `R_o mu` (\"Detector bias\")")
             .flag("hide_objects_in_walls", &O::hide_objects_in_walls, "project addition: on a walls-only plan, objects centred in a wall or outside are not written (\"Output: confirmed objects\")");
         classMap(t, "class_duplicate_center_radius_m", &O::class_duplicate_center_radius_m, "m", between(0, 1e3),

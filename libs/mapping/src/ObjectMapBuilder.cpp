@@ -116,7 +116,7 @@ world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
     out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), tentative), out.objects.end());
     // Twins by support (MappingOptions twin_max_support_ratio), judged on the whole run's counts:
     // during the run a real object seen late would lose to a neighbour seen early.
-    if (m_options.twin_max_support_ratio > 0) {
+    if (m_options.twin_max_support_ratio > 0 || m_options.twin_never_active_max_support_ratio > 0) {
         std::vector<char> twin(out.objects.size(), 0);
         for (std::size_t i = 0; i < out.objects.size(); ++i) {
             const world::MapObject& ref = out.objects[i];
@@ -135,12 +135,17 @@ world::ObjectMapData ObjectMapBuilder::confirmedMap() const {
 
 bool ObjectMapBuilder::isTwinBySupport(const world::MapObject& ref, const model::ObjectDistribution& p_ref,
                                        const world::MapObject& other) const {
-    if (m_options.twin_max_support_ratio <= 0 || isGivenObject(ref.id) || isGivenObject(other.id)) return false;
+    if ((m_options.twin_max_support_ratio <= 0 && m_options.twin_never_active_max_support_ratio <= 0) || isGivenObject(ref.id) ||
+        isGivenObject(other.id))
+        return false;
     // Objects of different rooms are never one (the room rule), and one seen only from the other
     // side of a wall is seen less.
     if (ref.room_id != 0 && other.room_id != 0 && ref.room_id != other.room_id) return false;
-    if (static_cast<double>(other.n_match) >= m_options.twin_max_support_ratio * static_cast<double>(ref.n_match))
-        return false;
+    const auto active = m_windows_active.find(other.id);
+    const bool never_active = active == m_windows_active.end() || active->second == 0;
+    const double ratio = never_active ? std::max(m_options.twin_max_support_ratio, m_options.twin_never_active_max_support_ratio)
+                                      : m_options.twin_max_support_ratio;
+    if (static_cast<double>(other.n_match) >= ratio * static_cast<double>(ref.n_match)) return false;
     return p_ref.probability(other.box.center.x(), other.box.center.y()) >= m_options.twin_min_likelihood;
 }
 

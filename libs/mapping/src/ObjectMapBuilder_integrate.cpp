@@ -187,6 +187,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         }
         m_windows_missed[k.id] += m_windows_missed[d.id];
         m_windows_missed_behind_new[k.id] += m_windows_missed_behind_new[d.id];
+        m_windows_active[k.id] += m_windows_active[d.id];
         m_codetections.absorb(k.id, d.id);
         forget(d.id);
         k.n_match += d.n_match;
@@ -244,6 +245,7 @@ void ObjectMapBuilder::forget(std::int64_t id) {
     m_windows_matched.erase(id);
     m_windows_missed.erase(id);
     m_windows_missed_behind_new.erase(id);
+    m_windows_active.erase(id);
     m_session_boxes.erase(id);
     m_codetections.forget(id);
 }
@@ -367,6 +369,7 @@ void ObjectMapBuilder::flush() {
             if (best >= 0) detected.insert(best);
         }
     }
+    for (const std::int64_t id : m_window_active) ++m_windows_active[id];
     for (const std::int64_t id : m_window_active)
         if (!matched.count(id))
             if (const auto it = index_of.find(id); it != index_of.end()) {

@@ -95,6 +95,11 @@ struct MappingOptions : public mrpt::config::CLoadableOptions {
     /// The gate of the rule above: the unnormalized Eq. perclassdist likelihood exp(-0.5 m^b) of
     /// the twin's centre under the neighbour's noise; 0.05 = the 95 % region of a Gaussian model.
     double twin_min_likelihood = 0.05;
+    /// Project rule (twins never in view): the support ratio of the rule above for a built object
+    /// that was never active in the whole run (matched only while hidden, truncated or out of
+    /// range, as the mapper's own visibility has it): the neighbour's detections displaced along
+    /// the ray behind it. 0 disables (such objects are judged by twin_max_support_ratio).
+    double twin_never_active_max_support_ratio = 0.3;
     /// Centre radius of a class (per-class entry, else duplicate_center_radius_m).
     double duplicateCenterRadiusOf(const std::string& class_name) const;
     /// Project rule: objects of a listed class stand between two rooms (a door in its doorway) and

@@ -191,6 +191,7 @@ class ObjectMapBuilder {
     std::unordered_map<std::int64_t, geometry::Box3D> m_estimates;
     std::unordered_map<std::int64_t, int> m_windows_matched;  ///< integrations that matched or made the object
     std::unordered_map<std::int64_t, int> m_windows_missed;   ///< integrations where it was active and unmatched
+    std::unordered_map<std::int64_t, int> m_windows_active;   ///< integrations where it was active (matched or not)
     std::unordered_map<std::int64_t, int> m_windows_missed_behind_new;  ///< SessionEvidence::windows_missed_behind_new
     bool m_earlier_session = false;                           ///< setMap(map, true): updating an earlier map
     std::unordered_map<std::int64_t, std::vector<SessionBox>> m_session_boxes;  ///< sessionBoxesOf()
