@@ -1,4 +1,3 @@
-#include <simp/camera/Occluders.h>
 #include <simp/camera/ZBufferVisibility.h>
 
 #include <algorithm>

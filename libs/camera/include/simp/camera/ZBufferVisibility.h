@@ -9,6 +9,7 @@
 /// doc/architecture.md "Camera and visibility".
 
 #include <simp/camera/FloorPlanGrid.h>
+#include <simp/camera/Occluders.h>
 #include <simp/camera/PinholeCamera.h>
 #include <simp/geometry/Box3D.h>
 
@@ -77,7 +78,7 @@ class ZBufferRenderer {
    private:
     void rasterizePolygon(const Eigen::Vector3d* pts_px_invz, int n, int object);
     /// Not a solid box: seen where nothing hides it (or its own top is front-most), hides at most with its top.
-    bool seeThrough(int object) const { return m_occludes != nullptr && (*m_occludes)[static_cast<std::size_t>(object)] != 1; }
+    bool seeThrough(int object) const { return m_occludes != nullptr && (*m_occludes)[static_cast<std::size_t>(object)] != kSolid; }
     bool m_depth_only = false;          ///< pass 0, rasterizing the hiding top of an open-below box
     int m_pass = 0;                     ///< 0: depth and coverage; 1: visibility against the final z-buffer
     const std::vector<int>* m_group = nullptr;
