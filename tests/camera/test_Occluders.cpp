@@ -51,6 +51,11 @@ TEST(Occluders, OnlyDoorsAreSeeThroughAndOnlyTablesOpenBelow) {
     EXPECT_EQ(occlusionOf("table"), kOpenBelow);
     EXPECT_EQ(occlusionOf("desk"), kSolid);
     EXPECT_EQ(occludingClasses({"sink", "door", "chair", "table"}), (std::vector<char>{1, 0, 1, 2}));
+    const std::vector<char> kinds = occludingClasses({"door", "table"});
+    EXPECT_EQ(occlusionOfClassId(kinds, 0), kSeeThrough);
+    EXPECT_EQ(occlusionOfClassId(kinds, 1), kOpenBelow);
+    EXPECT_EQ(occlusionOfClassId(kinds, 2), kSolid);   // an id outside the list is solid
+    EXPECT_EQ(occlusionOfClassId(kinds, -1), kSolid);
 }
 
 TEST(Occluders, ZBufferSeesDrawersUnderATableAndHidesBehindItsTop) {

@@ -17,4 +17,9 @@ std::vector<char> occludingClasses(const std::vector<std::string>& class_names) 
     return out;
 }
 
+char occlusionOfClassId(const std::vector<char>& class_kinds, int class_id) {
+    return class_id < 0 || static_cast<std::size_t>(class_id) >= class_kinds.size() ? static_cast<char>(kSolid)
+                                                                                     : class_kinds[static_cast<std::size_t>(class_id)];
+}
+
 }  // namespace simp::camera

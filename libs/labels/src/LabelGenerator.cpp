@@ -71,13 +71,10 @@ LabelSet generateLabels(const world::ObjectMapData& gt, const mrpt::maps::COccup
         walls = camera::FloorPlanGrid(*floorplan, 1.0 - options.visibility.occupied_threshold);
         if (options.visibility.ignore_object_cells) walls.clearWallsUnder(boxes, options.visibility.object_cell_margin_m);
     }
-    // Doors stand in open doorways: seen, but they hide nothing (as in the simulator and the mapper).
+    // How each box hides (camera/Occluders.h, as in the simulator and the mapper): doors hide nothing, tables with their top.
     const std::vector<char> class_occludes = camera::occludingClasses(gt.class_names);
-    std::vector<char> occludes(boxes.size(), 1);
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const auto c = static_cast<std::size_t>(gt.objects[i].class_id);
-        if (c < class_occludes.size()) occludes[i] = class_occludes[c];
-    }
+    std::vector<char> occludes(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) occludes[i] = camera::occlusionOfClassId(class_occludes, gt.objects[i].class_id);
     // The one occlusion renderer, at the pixel step, walls along every pixel's own ray (the
     // authors' cameras are tilted) and no depth margin behind them.
     camera::ZBufferParams render;

@@ -64,10 +64,9 @@ ViewWindow::Recall ViewWindow::recallAt(const maps::CObjectMap& map, const mrpt:
         m_boxes.clear(), m_box_object.clear(), m_box_occludes.clear();
         for (std::size_t i = 0; i < objects.size(); ++i) {
             if ((objects[i].box.center.head<2>() - eye).norm() > near_m) continue;
-            const auto c = static_cast<std::size_t>(objects[i].class_id);
             m_boxes.push_back(objects[i].box);
             m_box_object.push_back(i);
-            m_box_occludes.push_back(c < class_occludes.size() ? class_occludes[c] : 1);
+            m_box_occludes.push_back(camera::occlusionOfClassId(class_occludes, objects[i].class_id));
         }
         if (m_boxes.empty()) continue;
         m_renderer.render(view, m_boxes, &m_walls, zb, m_views);

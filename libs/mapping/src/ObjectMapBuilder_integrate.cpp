@@ -53,8 +53,7 @@ void ObjectMapBuilder::visibility(const camera::PinholeCamera& camera, int curre
     const std::vector<char> class_occludes = camera::occludingClasses(m_g.class_names);
     for (std::size_t k = 0; k < n; ++k) {
         m_boxes_scratch[k] = m_g.objects[k].box;
-        const auto c = static_cast<std::size_t>(m_g.objects[k].class_id);
-        m_occludes_scratch[k] = c < class_occludes.size() ? class_occludes[c] : 1;  // doors hide nothing
+        m_occludes_scratch[k] = camera::occlusionOfClassId(class_occludes, m_g.objects[k].class_id);
     }
     camera::ZBufferParams prm;
     prm.downscale = m_options.zbuffer_downscale;
@@ -369,13 +368,14 @@ void ObjectMapBuilder::flush() {
             if (best >= 0) detected.insert(best);
         }
     }
-    for (const std::int64_t id : m_window_active) ++m_windows_active[id];
-    for (const std::int64_t id : m_window_active)
+    for (const std::int64_t id : m_window_active) {
+        ++m_windows_active[id];
         if (!matched.count(id))
             if (const auto it = index_of.find(id); it != index_of.end()) {
                 if (!detected.count(id)) ++m_g.objects[it->second].n_skip;
                 ++m_windows_missed[id];
             }
+    }
     // Expected only behind a possible displaced copy of itself: evidence of a move, not of a
     // removal (MapUpdate.h), and no n_skip (the new object may be a twin in front of it).
     for (const std::int64_t id : m_window_active_behind_new)

@@ -21,14 +21,6 @@ void rangeOf(const VisibilityParams& p, const std::string& name, double& lo, dou
     if (ku < p.max_range_m.size() && p.max_range_m[ku] > 0) hi = p.max_range_m[ku];
 }
 
-/// How an object hides what lies behind it, by its class (camera::occludingClasses of the world's
-/// class names); an object of an unknown class id is solid.
-char occlusionOfObject(const world::MapObject& o, const std::vector<char>& class_occludes) {
-    return o.class_id < 0 || static_cast<std::size_t>(o.class_id) >= class_occludes.size()
-               ? static_cast<char>(camera::kSolid)
-               : class_occludes[static_cast<std::size_t>(o.class_id)];
-}
-
 }  // namespace
 
 bool imageBoxOf(const camera::PinholeCamera& view, const geometry::Box3D& box_in_camera, obs::ImageBox2D& box_2d) {
@@ -57,7 +49,7 @@ camera::FloorPlanGrid cameraWalls(const mrpt::maps::COccupancyGridMap2D& floorpl
     const std::vector<char> class_occludes = camera::occludingClasses(class_names);
     std::vector<geometry::Box3D> furniture;
     for (const auto& o : objects)
-        if (occlusionOfObject(o, class_occludes) != camera::kSeeThrough) furniture.push_back(o.box);
+        if (camera::occlusionOfClassId(class_occludes, o.class_id) != camera::kSeeThrough) furniture.push_back(o.box);
     walls.clearWallsUnder(furniture, self_margin_m);
     return walls;
 }
@@ -74,7 +66,7 @@ std::vector<VisibleObject> SceneVisibility::visible(const camera::PinholeCamera&
         const auto& o = objects[i];
         if ((o.box.center.head<2>() - cam).norm() - 0.5 * o.box.size.head<2>().norm() > global_max) continue;
         m_boxes.push_back(o.box);
-        m_occludes.push_back(occlusionOfObject(o, class_occludes));
+        m_occludes.push_back(camera::occlusionOfClassId(class_occludes, o.class_id));
         m_index.push_back(i);
     }
     camera::ZBufferParams z;

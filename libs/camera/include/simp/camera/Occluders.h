@@ -39,4 +39,8 @@ bool occludes(const std::string& class_name);
 /// occlusionOf() per class id, for the class list of a world (ids outside the list are solid).
 std::vector<char> occludingClasses(const std::vector<std::string>& class_names);
 
+/// The OcclusionKind of class id `class_id` in a list made by occludingClasses(); an id outside
+/// the list (negative or too large) is solid.
+char occlusionOfClassId(const std::vector<char>& class_kinds, int class_id);
+
 }  // namespace simp::camera
