@@ -452,3 +452,32 @@ TEST(MapUpdate, MissingOrMalformedEarlierMapIsNamed) {
     EXPECT_NE(e.find("--update map '" + a.update_dir + "'"), std::string::npos) << e;
     EXPECT_NE(e.find("objects.json"), std::string::npos) << e;
 }
+
+// Table C moved 0.4 m and turned by 40 deg: its detections make a new table that may merge into
+// the old one (duplicate merging) and the turn test must see those windows too.
+const test::TrueObject kTableCShiftedAndTurned{0, makeUprightBox({4.4, 4.9, 0.375}, {1.2, 0.8, 0.75}, 40.0 * M_PI / 180.0)};
+
+TEST(MapUpdate, EveryMatchedWindowLeavesItsBoxAlsoThroughAMerge) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan);
+    const auto* c = nearest(m0, kTableC);
+    ASSERT_TRUE(c);
+    const auto b = updating(m0, plan, {kTableA, kCabinetB, kTableCShiftedAndTurned, kSofaD});
+    // The turn test and the turned object's new box read the boxes of the windows that matched
+    // an object, whether the window matched it directly or matched a new object merged into it
+    // later: one box per matched window, for earlier and new objects alike.
+    const auto now = b->confirmedMap();
+    int new_objects = 0;
+    for (const auto& o : now.objects) {
+        new_objects += !b->isGivenObject(o.id);
+        EXPECT_EQ(static_cast<int>(b->sessionBoxesOf(o.id).size()), b->evidenceOf(o.id).windows_matched) << "object " << o.id;
+    }
+    EXPECT_GE(new_objects, 1);  // the sofa
+    // The table is reported moved (its old id), to its new place.
+    const MapUpdateResult r = detectChanges(m0, *b);
+    const auto moved = std::find_if(r.changes.begin(), r.changes.end(), [&](const auto& ch) { return ch.id_before == c->id; });
+    ASSERT_NE(moved, r.changes.end());
+    EXPECT_EQ(moved->kind, "moved");
+    ASSERT_TRUE(moved->after);
+    EXPECT_LT((moved->after->center - kTableCShiftedAndTurned.box.center).head<2>().norm(), 0.15);
+}

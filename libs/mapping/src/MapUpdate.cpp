@@ -296,6 +296,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         UpdateEvidence& row = r.evidence[row_of.at(o.id)];
         const TurnEstimate t = estimateTurn(o.box, builder.sessionBoxesOf(o.id));
         row.turn_deg = t.turn_rad * 180.0 / M_PI, row.turn_std_error_deg = t.std_error_rad * 180.0 / M_PI;
+        row.turn_concentration = t.concentration;
         const auto it = index_in_map.find(o.id);
         if (row.decision != "kept" || it == index_in_map.end() || drop[it->second] ||
             !isTurned(t, opt.update_turn_min_windows, opt.update_turn_min_deg * M_PI / 180.0, opt.update_turn_sigmas))

@@ -180,7 +180,7 @@ std::size_t ObjectMapBuilder::mergeMapDuplicates(const std::set<std::int64_t>& i
         const world::MapObject& d = m_g.objects[drop];
         setEstimate(k, mergeBoxes(estimateOf(k), k.n_match, estimateOf(d), d.n_match));
         m_windows_matched[k.id] += m_windows_matched[d.id];
-        if (auto windows = m_session_boxes.extract(d.id); windows && isGivenObject(k.id)) {
+        if (auto windows = m_session_boxes.extract(d.id)) {
             auto& into = m_session_boxes[k.id];
             into.insert(into.end(), windows.mapped().begin(), windows.mapped().end());
         }
@@ -319,7 +319,7 @@ void ObjectMapBuilder::flush() {
         if (c >= 0 && cost(r, c) < m_options.tau_cost) {
             // Merge: weighted centre, dimensions and SVD-projected rotation; n_match summed.
             world::MapObject& o = m_g.objects[cands[c]];
-            if (m_earlier_session && isGivenObject(o.id)) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
+            if (m_earlier_session) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
             setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
@@ -335,6 +335,9 @@ void ObjectMapBuilder::flush() {
             setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             id_of_local[r] = o.id;
+            // Kept for new objects too: merged into an earlier object, their windows carry its
+            // heading this session (a moved object whose new place merges into its old one).
+            if (m_earlier_session) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
             added.push_back(o);
             ++m_stats.added;
         }

@@ -102,9 +102,9 @@ class ObjectMapBuilder {
     bool isGivenObject(std::int64_t id) const { return id < m_first_built_id; }
     /// This session's evidence about a map object (zero when none).
     SessionEvidence evidenceOf(std::int64_t id) const;
-    /// Updating an earlier map (setMap(map, true)): the boxes of the windows that matched one of its
-    /// objects this session (means of detections, with the class bias), for the turn test
-    /// (SessionTurn.h); empty for other objects.
+    /// Updating an earlier map (setMap(map, true)): the boxes of the windows that matched an object
+    /// this session (means of detections, with the class bias), for the turn test (SessionTurn.h),
+    /// including those of the new objects merged into it; empty when not updating.
     const std::vector<SessionBox>& sessionBoxesOf(std::int64_t id) const;
     /// The map box of those windows (their weighted merge, minus the class bias, aligned to the
     /// walls): the object where this session alone saw it. nullopt without windows.

@@ -29,6 +29,7 @@ struct UpdateEvidence {
     int nearest_windows = 0;       ///< its matched windows this session
     double turn_deg = 0;           ///< (earlier) mean heading change over its matched windows (SessionTurn.h); 0 without
     double turn_std_error_deg = 0; ///< (earlier) standard error of turn_deg
+    double turn_concentration = 0; ///< (earlier) TurnEstimate::concentration (a turn counts from kMinTurnConcentration)
 };
 
 /// Writes the rows as a tab-separated file with a header line.
