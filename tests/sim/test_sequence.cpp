@@ -149,6 +149,34 @@ TEST(SimChanges, FractionOfObjectsChangesAndDoorsClose) {
     EXPECT_EQ(free_cells(same), free_cells(map));
 }
 
+TEST(SimChanges, AMovedObjectStaysInItsRoom) {
+    // Furniture is carried within its room: a cabinet against a wall does not reappear on the
+    // wall's far side. The built-in office (a room map), every object changed, several draws.
+    simp::sim::OfficeParams office;
+    const auto map = simp::sim::generateOffice(office, 3);
+    ASSERT_FALSE(map.rooms.empty());
+    simp::sim::ChangeParams p;
+    p.fraction = 1.0;
+    int moves = 0;
+    for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+        simp::sim::Rng rng(seed);
+        simp::sim::ChangeSummary s;
+        simp::sim::applyChanges(map, p, rng, &s);
+        for (const auto& c : s.changes) {
+            if (c.kind != simp::sim::ObjectChange::Kind::Moved) continue;
+            ASSERT_TRUE(c.before && c.after);
+            const auto& a = c.before->box.center;
+            const auto& b = c.after->box.center;
+            const int room = map.rooms.roomAt(a.x(), a.y());
+            if (room <= 0) continue;
+            ++moves;
+            EXPECT_EQ(map.rooms.roomAt(b.x(), b.y()), room) << "seed " << seed << ": object " << c.before->id << " moved from ("
+                                                           << a.x() << ", " << a.y() << ") to (" << b.x() << ", " << b.y() << ")";
+        }
+    }
+    EXPECT_GT(moves, 50);  // a third of the non-door objects per draw
+}
+
 TEST(SimSequence, RunsInTheImportedAuthorsOffice) {
     const std::string simp_dir = std::string(SIMP_SHARED_DATA_DIR) + "/simp-office";
     if (!std::filesystem::exists(simp_dir + "/floor.config"))
