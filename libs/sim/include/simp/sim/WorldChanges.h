@@ -47,7 +47,7 @@ struct ChangeSummary {
 };
 
 /// The world changed: of the n non-door objects, round(fraction * n) change, split evenly into
-/// removals, moves (an object that cannot be moved without overlap is removed) and additions
+/// removals, moves within the object's room (one that cannot be moved so without overlap is removed) and additions
 /// (new objects of classes drawn from the map's objects, placed on free floor inside rooms).
 /// Objects never overlap each other or walls. Door closing blocks the door's wall gap in the
 /// floor plan. fraction = 0 and door_close_fraction <= 0 returns an identical copy.
