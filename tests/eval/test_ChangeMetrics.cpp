@@ -36,7 +36,40 @@ ChangeRecord added(std::int64_t id, const std::string& cls, double x, double y) 
     return c;
 }
 
+ChangeRecord doorClosed(std::int64_t id, double x, double y) {
+    ChangeRecord c;
+    c.kind = "door_closed";
+    c.id_before = c.id_after = id;
+    c.class_name = "door";
+    c.before = c.after = makeUprightBox({x, y, 1.0}, {0.9, 0.05, 2.0}, 0.0);
+    return c;
+}
+
 }  // namespace
+
+TEST(ChangeMetrics, ClosedDoorsAreAKindOfTheirOwn) {
+    // Three doors closed; the report finds two of them and one that was not, and reports a fourth
+    // door removed: a removal, not a closed door.
+    const std::vector<ChangeRecord> truth = {doorClosed(5, 1, 1), doorClosed(6, 3, 1), doorClosed(7, 5, 1),
+                                             removed(1, "table", 1, 4)};
+    const std::vector<ChangeRecord> report = {doorClosed(5, 1, 1), doorClosed(7, 5, 1), doorClosed(8, 7, 1),
+                                              removed(1, "table", 1, 4), removed(6, "door", 3, 1)};
+    const auto s = simp::eval::scoreChanges(truth, report);
+    EXPECT_EQ(s.doors_closed.n_true, 3u);
+    EXPECT_EQ(s.doors_closed.n_reported, 3u);
+    EXPECT_EQ(s.doors_closed.n_correct, 2u);
+    EXPECT_DOUBLE_EQ(s.removed.precision, 0.5);  // the door reported removed
+    EXPECT_DOUBLE_EQ(s.removed.recall, 1.0);
+    const auto j = simp::eval::toJson(s);
+    EXPECT_DOUBLE_EQ(j["door_closed"]["precision"].get<double>(), 2.0 / 3.0);
+    EXPECT_DOUBLE_EQ(j["door_closed"]["recall"].get<double>(), 2.0 / 3.0);
+    // Scoring the object classes only leaves the doors out.
+    simp::eval::ChangeMatchParams p;
+    p.classes = {"table"};
+    const auto t = simp::eval::scoreChanges(truth, report, p);
+    EXPECT_EQ(t.doors_closed.n_true, 0u);
+    EXPECT_DOUBLE_EQ(t.removed.precision, 1.0);
+}
 
 TEST(ChangeMetrics, PrecisionAndRecallPerKind) {
     const std::vector<ChangeRecord> truth = {removed(1, "table", 1, 1), removed(2, "sofa", 3, 1),

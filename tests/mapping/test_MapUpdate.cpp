@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<std::string> kClasses = {"table", "cabinet", "sofa", "drawers"};
+const std::vector<std::string> kClasses = {"table", "cabinet", "sofa", "drawers", "door"};
 // An 8 m x 6 m room; the robot circles its middle (radius 1.2 m), seeing every object.
 const test::TrueObject kTableA{0, makeUprightBox({1.4, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.3)};
 const test::TrueObject kCabinetB{1, makeUprightBox({6.6, 1.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)};
@@ -480,4 +480,32 @@ TEST(MapUpdate, EveryMatchedWindowLeavesItsBoxAlsoThroughAMerge) {
     EXPECT_EQ(moved->kind, "moved");
     ASSERT_TRUE(moved->after);
     EXPECT_LT((moved->after->center - kTableCShiftedAndTurned.box.center).head<2>().norm(), 0.15);
+}
+
+// A door against the north wall, seen from the whole circle.
+const test::TrueObject kDoorH{4, makeUprightBox({2.5, 5.9, 1.0}, {0.9, 0.05, 2.0}, 0.0)};
+
+TEST(MapUpdate, ADoorNoLongerSeenIsReportedClosedAndStaysInTheMap) {
+    const auto plan = test::makeFloorPlan(8, 6);
+    const auto m0 = earlierMap(plan, {kTableA, kCabinetB, kTableC, kDoorH});
+    const auto* door = nearest(m0, kDoorH);
+    ASSERT_TRUE(door);
+    ASSERT_LT((door->box.center - kDoorH.box.center).head<2>().norm(), 0.3);
+    // The session does not see the door (closed: its leaf in the wall's plane).
+    const MapUpdateResult r = update(m0, plan, {kTableA, kCabinetB, kTableC});
+    ASSERT_EQ(r.changes.size(), 1u);
+    const auto& ch = r.changes[0];
+    EXPECT_EQ(ch.kind, "door_closed");
+    EXPECT_EQ(ch.class_name, "door");
+    EXPECT_EQ(ch.id_before, door->id);
+    EXPECT_EQ(ch.id_after, door->id);
+    ASSERT_TRUE(ch.before && ch.after);
+    EXPECT_EQ(ch.after->center, door->box.center);
+    ASSERT_TRUE(ch.confidence);
+    EXPECT_GT(*ch.confidence, 0.5);
+    // A building keeps its doors: the next session may find it open.
+    const auto kept = std::find_if(r.map.objects.begin(), r.map.objects.end(), [&](const auto& o) { return o.id == door->id; });
+    EXPECT_NE(kept, r.map.objects.end());
+    // The same session seeing the door: nothing changed.
+    EXPECT_TRUE(update(m0, plan, {kTableA, kCabinetB, kTableC, kDoorH}).changes.empty());
 }

@@ -63,7 +63,7 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
         return b && p.visited_rooms.count(world::roomOfBox(*p.rooms, *b));
     };
     const auto scored = [&](const ChangeRecord& c) {
-        return (c.kind == "removed" || c.kind == "moved" || c.kind == "added") &&
+        return (c.kind == "removed" || c.kind == "moved" || c.kind == "added" || c.kind == "door_closed") &&
                (classes.empty() || classes.count(c.class_name)) && (!p.rooms || visited(c.before) || visited(c.after));
     };
     std::vector<ChangeRecord> truth, report;
@@ -126,9 +126,11 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
         report = std::move(r2);
     }
 
-    // removed, moved: by id_before.
-    for (const char* kind : {"removed", "moved"}) {
-        KindScore& k = std::string(kind) == "removed" ? s.removed : s.moved;
+    // removed, moved, door_closed: by id_before.
+    for (const auto& [kind, score] : {std::pair<const char*, KindScore*>{"removed", &s.removed},
+                                      {"moved", &s.moved},
+                                      {"door_closed", &s.doors_closed}}) {
+        KindScore& k = *score;
         std::set<std::int64_t> true_ids;
         for (const auto& c : truth)
             if (c.kind == kind) true_ids.insert(*c.id_before);
@@ -175,16 +177,19 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
     finish(s.removed);
     finish(s.moved);
     finish(s.added);
+    finish(s.doors_closed);
     return s;
 }
 
 nlohmann::ordered_json toJson(const ChangeScores& s) {
-    // Key order as the command-line contract writes it (removed, moved, added; precision first).
+    // Key order as the command-line contract writes it (removed, moved, added; precision first);
+    // door_closed after them.
     const auto k = [](const KindScore& v) {
         return nlohmann::ordered_json{{"precision", v.precision}, {"recall", v.recall}, {"n_true", v.n_true},
                               {"n_reported", v.n_reported}, {"n_correct", v.n_correct}};
     };
-    return nlohmann::ordered_json{{"removed", k(s.removed)}, {"moved", k(s.moved)}, {"added", k(s.added)}};
+    return nlohmann::ordered_json{
+        {"removed", k(s.removed)}, {"moved", k(s.moved)}, {"added", k(s.added)}, {"door_closed", k(s.doors_closed)}};
 }
 
 std::string changeMarkdownTable(const ChangeScores& s) {
@@ -192,7 +197,8 @@ std::string changeMarkdownTable(const ChangeScores& s) {
     char line[200];
     for (const auto& [name, k] : {std::pair<const char*, const KindScore*>{"removed", &s.removed},
                                   {"moved", &s.moved},
-                                  {"added", &s.added}}) {
+                                  {"added", &s.added},
+                                  {"door_closed", &s.doors_closed}}) {
         std::snprintf(line, sizeof line, "| %s | %zu | %zu | %zu | %.3f | %.3f |\n", name, k->n_true, k->n_reported,
                       k->n_correct, k->precision, k->recall);
         out += line;

@@ -19,7 +19,8 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
     // (the class palette has reds and greens too).
     namespace fc = obs::figure_colors;
     const cv::Scalar kRemoved = toBgr(fc::kWrong), kMoved = toBgr(fc::kMoved), kAdded = toBgr(fc::kGroundTruth),
-                     kUnchanged = toBgr(fc::kUnchanged), kUnseen = toBgr(fc::kUnseen);
+                     kUnchanged = toBgr(fc::kUnchanged), kUnseen = toBgr(fc::kUnseen),
+                     kDoorClosed = toBgr(fc::kDoorClosed);
     WorldBounds bounds;
     for (const auto& o : map.objects) bounds.add(o.box);
     for (const auto& ch : changes) {
@@ -39,7 +40,7 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
         drawPolygon(c, geometry::footprint(o.box), unseen ? kUnseen : kUnchanged, 1, unseen ? 0.25 : 0.15);
         ++(unseen ? n_unseen : n_unchanged);
     }
-    int n_removed = 0, n_moved = 0, n_added = 0;
+    int n_removed = 0, n_moved = 0, n_added = 0, n_doors_closed = 0;
     for (const auto& ch : changes) {
         if (ch.kind == "removed" && ch.before) {
             const auto fp = geometry::footprint(*ch.before);
@@ -60,12 +61,16 @@ cv::Mat3b drawChangeMap(const mrpt::maps::COccupancyGridMap2D& grid, const world
         } else if (ch.kind == "added" && ch.after) {
             drawPolygon(c, geometry::footprint(*ch.after), kAdded, 2, 0.45);
             ++n_added;
+        } else if (ch.kind == "door_closed" && ch.after) {
+            drawPolygon(c, geometry::footprint(*ch.after), kDoorClosed, 3, 1.0);
+            ++n_doors_closed;
         }
     }
     drawScaleBar(c);
     std::vector<LegendItem> legend{{"removed (" + std::to_string(n_removed) + ")", kRemoved},
                                                            {"moved (" + std::to_string(n_moved) + ")", kMoved},
                                                            {"added (" + std::to_string(n_added) + ")", kAdded},
+                                                           {"door closed (" + std::to_string(n_doors_closed) + ")", kDoorClosed},
                                                            {"unchanged (" + std::to_string(n_unchanged) + ")", kUnchanged},
                                                            {"not in view (" + std::to_string(n_unseen) + ")", kUnseen}};
     drawLegend(c, legend);

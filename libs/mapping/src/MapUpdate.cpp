@@ -1,5 +1,6 @@
 /// \file MapUpdate.cpp
 /// Change detection of a map update (MapUpdate.h).
+#include <simp/camera/Occluders.h>
 #include <simp/geometry/Box3DIoU.h>
 #include <simp/mapping/MapUpdate.h>
 #include <simp/mapping/SessionTurn.h>
@@ -259,18 +260,29 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
         if (partner_of_gone[p.g] < 0 && partner_of_fresh[p.f] < 0)
             partner_of_gone[p.g] = static_cast<int>(p.f), partner_of_fresh[p.f] = static_cast<int>(p.g);
 
-    std::vector<world::ChangeRecord> removed, moved, added;
+    std::vector<world::ChangeRecord> removed, moved, added, doors_closed;
     for (std::size_t g = 0; g < gone.size(); ++g) {
         const world::MapObject& b = *gone[g].before;
         if (partner_of_gone[g] < 0 && !gone[g].removable) {  // no new place, too little evidence: kept
             if (gone[g].spared_nested) r.evidence[row_of.at(b.id)].decision = "nested";
             continue;
         }
-        if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;
         world::ChangeRecord c;
         c.id_before = b.id;
         c.class_name = m0.class_names.at(static_cast<std::size_t>(b.class_id));
         c.before = b.box;
+        if (partner_of_gone[g] < 0 && c.class_name == camera::kDoorClass) {
+            // A building keeps its doors: one expected and not seen is closed (its leaf in the
+            // wall's plane, no door to the detector). It stays in the map for the next session.
+            r.evidence[row_of.at(b.id)].decision = "door-closed";
+            c.kind = "door_closed";
+            c.id_after = b.id;
+            c.after = b.box;
+            c.confidence = removedConfidence(gone[g].evidence);
+            doors_closed.push_back(c);
+            continue;
+        }
+        if (const auto it = index_in_map.find(b.id); it != index_in_map.end()) drop[it->second] = true;
         if (partner_of_gone[g] < 0) {
             r.evidence[row_of.at(b.id)].decision = "removed";
             c.kind = "removed";
@@ -334,6 +346,7 @@ MapUpdateResult detectChanges(const world::ObjectMapData& m0, const ObjectMapBui
     r.changes = std::move(removed);
     r.changes.insert(r.changes.end(), moved.begin(), moved.end());
     r.changes.insert(r.changes.end(), added.begin(), added.end());
+    r.changes.insert(r.changes.end(), doors_closed.begin(), doors_closed.end());
     return r;
 }
 

@@ -51,6 +51,7 @@ struct KindScore {
 
 struct ChangeScores {
     KindScore removed, moved, added;
+    KindScore doors_closed;  ///< door_closed entries, matched by id_before as removals are
     std::size_t ignored_reports = 0;   ///< BeforeMaps: reports about ghosts / objects the map had missed
     std::size_t truth_not_in_map = 0;  ///< BeforeMaps: true removals of objects the map never had
 };
@@ -65,7 +66,8 @@ struct BeforeMaps {
 ChangeScores scoreChanges(const std::vector<world::ChangeRecord>& truth, const std::vector<world::ChangeRecord>& report,
                           const ChangeMatchParams& params = {}, const BeforeMaps& before = {});
 
-/// `{"removed": {"precision": p, "recall": r, "n_true": .., "n_reported": .., "n_correct": ..}, "moved": ..., "added": ...}`
+/// `{"removed": {"precision": p, "recall": r, "n_true": .., "n_reported": .., "n_correct": ..}, "moved": ..., "added": ...,
+/// "door_closed": ...}`
 nlohmann::ordered_json toJson(const ChangeScores& s);
 /// A Markdown table, one row per kind.
 std::string changeMarkdownTable(const ChangeScores& s);

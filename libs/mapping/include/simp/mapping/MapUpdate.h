@@ -33,6 +33,8 @@
 ///  - nested: an m0 object with update_nested_overlap_fraction of its volume inside the box of an
 ///    m0 object of another class, its top not above it, is never removed on misses alone (a new
 ///    place still moves it);
+///  - door closed: a door of m0 with the removal evidence and no new place is reported
+///    `door_closed` and stays in the map (a building keeps its doors; a closed one is not seen);
 ///  - added: the other new confirmed objects (new ids, above every id of m0).
 ///  New objects count (and enter the updated map) only once matched in update_min_new_windows
 ///  integration windows: the earlier map already explains the scene, so a twin made of a few
@@ -56,7 +58,7 @@ double sharedVolumeFraction(const geometry::Box3D& a, const geometry::Box3D& b, 
 
 struct MapUpdateResult {
     world::ObjectMapData map;                 ///< the updated map (builder's confirmed map minus removed objects)
-    std::vector<world::ChangeRecord> changes; ///< removed, moved, added, each with a confidence
+    std::vector<world::ChangeRecord> changes; ///< removed, moved, added, door_closed, each with a confidence
     std::size_t unseen = 0;                   ///< objects of m0 this session never expected to see (kept)
     /// Per object of m0 (its order), then per new object of the builder's confirmed map: the
     /// evidence and the decision (M/update_evidence.tsv).

@@ -64,6 +64,7 @@ inline constexpr Rgb kMoved{255, 140, 0};                ///< moved objects
 inline constexpr Rgb kMissed{0, 120, 220};               ///< ground-truth objects the map missed
 inline constexpr Rgb kUnchanged{150, 150, 150};          ///< objects a change report leaves alone
 inline constexpr Rgb kUnseen{120, 70, 170};              ///< objects a map update could not check (never in view)
+inline constexpr Rgb kDoorClosed{0, 160, 160};           ///< doors a map update found closed (teal)
 inline constexpr Rgb kText{0, 0, 0};                     ///< text, axes, the scale bar
 inline constexpr Rgb kGrid{215, 215, 215};               ///< grid lines of charts
 inline constexpr Rgb kSigma1{255, 0, 0};                 ///< 1-sigma ellipse of a noise plot
