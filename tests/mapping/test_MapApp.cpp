@@ -10,6 +10,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <simp/io/Tum.h>
 #include <simp/mapping/MapApp.h>
+#include <simp/world/ChangesFile.h>
 #include <simp/world/World.h>
 
 #include <filesystem>
@@ -28,8 +29,38 @@ const std::vector<std::string> kClasses = {"table", "cabinet", "chair"};
 const std::vector<test::TrueObject> kTruth = {{0, makeUprightBox({1.4, 3.0, 0.375}, {1.2, 0.8, 0.75}, 0.3)},
                                               {1, makeUprightBox({6.6, 1.0, 0.9}, {0.5, 1.0, 1.8}, 0.0)}};
 
-/// W (floor plan + an objects.json whose objects must NOT be used), Q/sequence.rawlog and
-/// Q/groundtruth.tum of a robot circling the room.
+/// Q/sequence.rawlog and Q/groundtruth.tum of a robot circling the room among `truth`.
+void writeSequence(const std::string& q, const std::vector<test::TrueObject>& truth) {
+    fs::create_directories(q);
+    mrpt::io::CFileOutputStream file(q + "/sequence.rawlog");
+    auto arch = mrpt::serialization::archiveFrom(file);
+    std::vector<simp::io::StampedPose2D> traj;
+    std::mt19937 rng(42);
+    constexpr int kSteps = 80;
+    mrpt::poses::CPose2D prev;
+    for (int s = 0; s < kSteps; ++s) {
+        const double a = 2.0 * M_PI * s / kSteps, t = 1.6e9 + 0.2 * s;
+        const mrpt::poses::CPose2D p(4.0 + 1.2 * std::cos(a), 3.0 + 1.2 * std::sin(a), a + M_PI / 2);
+        traj.push_back({t, p.asTPose()});
+        mrpt::obs::CActionCollection acts;
+        mrpt::obs::CActionRobotMovement2D move;
+        move.timestamp = mrpt::Clock::fromDouble(t);
+        move.computeFromOdometry(s == 0 ? mrpt::poses::CPose2D() : p - prev, {});
+        acts.insert(move);
+        mrpt::obs::CSensoryFrame sf;
+        for (auto& o : test::observe(truth, kClasses, mrpt::poses::CPose3D(p), rng)) {
+            auto ptr = simp::obs::CObservationObjects3D::Create(o);
+            ptr->timestamp = mrpt::Clock::fromDouble(t);
+            sf.insert(ptr);
+        }
+        arch << acts << sf;
+        prev = p;
+    }
+    simp::io::writeTum(q + "/groundtruth.tum", traj);
+}
+
+/// W (floor plan + an objects.json whose objects must NOT be used), Q (writeSequence of kTruth)
+/// and test.ini.
 std::string writeInputs(const std::string& name) {
     const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "mapping" / name;
     fs::remove_all(dir);
@@ -47,32 +78,7 @@ std::string writeInputs(const std::string& name) {
     decoy.box = makeUprightBox({7.5, 5.5, 0.45}, {0.5, 0.5, 0.9}, 0.0);
     w.objects.objects.push_back(decoy);
     simp::world::saveWorld(w, (dir / "W").string());
-
-    mrpt::io::CFileOutputStream file((dir / "Q" / "sequence.rawlog").string());
-    auto arch = mrpt::serialization::archiveFrom(file);
-    std::vector<simp::io::StampedPose2D> traj;
-    std::mt19937 rng(42);
-    constexpr int kSteps = 80;
-    mrpt::poses::CPose2D prev;
-    for (int s = 0; s < kSteps; ++s) {
-        const double a = 2.0 * M_PI * s / kSteps, t = 1.6e9 + 0.2 * s;
-        const mrpt::poses::CPose2D p(4.0 + 1.2 * std::cos(a), 3.0 + 1.2 * std::sin(a), a + M_PI / 2);
-        traj.push_back({t, p.asTPose()});
-        mrpt::obs::CActionCollection acts;
-        mrpt::obs::CActionRobotMovement2D move;
-        move.timestamp = mrpt::Clock::fromDouble(t);
-        move.computeFromOdometry(s == 0 ? mrpt::poses::CPose2D() : p - prev, {});
-        acts.insert(move);
-        mrpt::obs::CSensoryFrame sf;
-        for (auto& o : test::observe(kTruth, kClasses, mrpt::poses::CPose3D(p), rng)) {
-            auto ptr = simp::obs::CObservationObjects3D::Create(o);
-            ptr->timestamp = mrpt::Clock::fromDouble(t);
-            sf.insert(ptr);
-        }
-        arch << acts << sf;
-        prev = p;
-    }
-    simp::io::writeTum((dir / "Q" / "groundtruth.tum").string(), traj);
+    writeSequence((dir / "Q").string(), kTruth);
     // The shipped ini disables chairs, keeps tables from 1 m and cabinets from confidence 0.9:
     // the test detections (confidence 0.9f) use a test ini.
     std::ofstream ini(dir / "test.ini");
@@ -131,6 +137,42 @@ TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
     ASSERT_TRUE(gt);
     EXPECT_EQ(gt->getLineCount() + 1, simp::io::readTum(dir + "/Q/groundtruth.tum").size());
     EXPECT_FALSE(loaded->getByName(simp::eval::scene_names::kParticles));
+}
+
+/// Runs simp-map with `args` (after the program name); returns its log.
+std::string runMapApp(const std::vector<std::string>& args) {
+    std::vector<std::string> all = {"simp-map"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<const char*> argv;
+    for (const auto& a : all) argv.push_back(a.c_str());
+    MapApp app;
+    std::ostringstream log;
+    app.log = &log;
+    EXPECT_TRUE(app.initialize(static_cast<int>(argv.size()), argv.data()));
+    app.run();
+    return log.str();
+}
+
+TEST(MapApp, UpdatesAnEarlierMapAndReportsWhatChanged) {
+    const std::string dir = writeInputs("update_end_to_end");
+    const std::vector<std::string> common = {"--world", dir + "/W", "--config", dir + "/test.ini"};
+    const auto with = [&](std::vector<std::string> a) {
+        a.insert(a.end(), common.begin(), common.end());
+        return a;
+    };
+    runMapApp(with({"--rawlog", dir + "/Q/sequence.rawlog", "--poses", dir + "/Q/groundtruth.tum", "--out", dir + "/M0"}));
+    // A second session after the cabinet was taken away.
+    writeSequence(dir + "/Q2", {kTruth[0]});
+    const std::string log = runMapApp(with({"--rawlog", dir + "/Q2/sequence.rawlog", "--poses", dir + "/Q2/groundtruth.tum",
+                                            "--update", dir + "/M0", "--out", dir + "/M"}));
+    EXPECT_NE(log.find("1 removed, 0 moved, 0 added, 0 doors closed"), std::string::npos) << log;
+    for (const char* f : {"changes.json", "changes.png", "update_evidence.tsv", "objects.json"})
+        EXPECT_TRUE(fs::exists(fs::path(dir) / "M" / f)) << f;
+    const auto changes = simp::world::loadChangesFile(dir + "/M/changes.json");
+    ASSERT_EQ(changes.size(), 1u);
+    EXPECT_EQ(changes[0].kind, "removed");
+    EXPECT_EQ(changes[0].class_name, "cabinet");
+    EXPECT_EQ(simp::world::loadWorld(dir + "/M").objects.objects.size(), 1u);  // the table stays
 }
 
 TEST(MapApp, OdometryOnlyUsesTheRawlogOdometry) {

@@ -201,7 +201,8 @@ void MapApp::run() {
         std::map<std::string, int> per_kind;
         for (const auto& c : m_update.changes) ++per_kind[c.kind];
         out << "simp-map: changes against '" << m_args.update_dir << "': " << per_kind["removed"] << " removed, "
-            << per_kind["moved"] << " moved, " << per_kind["added"] << " added; " << m_update.unseen
+            << per_kind["moved"] << " moved, " << per_kind["added"] << " added, " << per_kind["door_closed"]
+            << " doors closed; " << m_update.unseen
             << " objects of the earlier map not in view this session (kept); " << (dir / "changes.json").string()
             << ", " << (dir / "changes.png").string() << ", " << (dir / "update_evidence.tsv").string() << "\n";
     }
