@@ -102,6 +102,22 @@ void checkOutput(const std::string& out) {
     EXPECT_FALSE(m.rooms.empty());  // the segmented rooms are written
 }
 
+/// Runs `app` as simp-map with `args` (after the program name); returns its log.
+std::string runMapApp(MapApp& app, const std::vector<std::string>& args) {
+    std::vector<std::string> all = {"simp-map"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<const char*> argv;
+    for (const auto& a : all) argv.push_back(a.c_str());
+    std::ostringstream log;
+    app.log = &log;
+    if (!app.initialize(static_cast<int>(argv.size()), argv.data())) {
+        ADD_FAILURE() << "simp-map did not accept its arguments";
+        return {};
+    }
+    app.run();
+    return log.str();
+}
+
 }  // namespace
 
 TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
@@ -109,18 +125,11 @@ TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
     const std::string test_ini = dir + "/test.ini";
     const std::string out = dir + "/M";
     const std::string scene = dir + "/map.3Dscene";
-    const std::vector<std::string> args = {"simp-map", "--world", dir + "/W", "--rawlog", dir + "/Q/sequence.rawlog",
-                                           "--poses", dir + "/Q/groundtruth.tum", "--out", out, "--config", test_ini,
-                                           "--3dscene", scene};
-    std::vector<const char*> argv;
-    for (const auto& a : args) argv.push_back(a.c_str());
     MapApp app;
-    std::ostringstream log;
-    app.log = &log;
-    ASSERT_TRUE(app.initialize(static_cast<int>(argv.size()), argv.data()));
-    app.run();
+    const std::string log = runMapApp(app, {"--world", dir + "/W", "--rawlog", dir + "/Q/sequence.rawlog", "--poses",
+                                            dir + "/Q/groundtruth.tum", "--out", out, "--config", test_ini, "--3dscene", scene});
     EXPECT_EQ(app.framesMapped(), 80u);
-    EXPECT_NE(log.str().find("objects written"), std::string::npos);
+    EXPECT_NE(log.find("objects written"), std::string::npos);
     checkOutput(out);
 
     // --3dscene: the floor plan, a labelled box per built object, the poses file as ground truth.
@@ -139,20 +148,6 @@ TEST(MapApp, BuildsTheMapOfASmallRawlogEndToEnd) {
     EXPECT_FALSE(loaded->getByName(simp::eval::scene_names::kParticles));
 }
 
-/// Runs simp-map with `args` (after the program name); returns its log.
-std::string runMapApp(const std::vector<std::string>& args) {
-    std::vector<std::string> all = {"simp-map"};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<const char*> argv;
-    for (const auto& a : all) argv.push_back(a.c_str());
-    MapApp app;
-    std::ostringstream log;
-    app.log = &log;
-    EXPECT_TRUE(app.initialize(static_cast<int>(argv.size()), argv.data()));
-    app.run();
-    return log.str();
-}
-
 TEST(MapApp, UpdatesAnEarlierMapAndReportsWhatChanged) {
     const std::string dir = writeInputs("update_end_to_end");
     const std::vector<std::string> common = {"--world", dir + "/W", "--config", dir + "/test.ini"};
@@ -160,10 +155,11 @@ TEST(MapApp, UpdatesAnEarlierMapAndReportsWhatChanged) {
         a.insert(a.end(), common.begin(), common.end());
         return a;
     };
-    runMapApp(with({"--rawlog", dir + "/Q/sequence.rawlog", "--poses", dir + "/Q/groundtruth.tum", "--out", dir + "/M0"}));
+    MapApp first, second;
+    runMapApp(first, with({"--rawlog", dir + "/Q/sequence.rawlog", "--poses", dir + "/Q/groundtruth.tum", "--out", dir + "/M0"}));
     // A second session after the cabinet was taken away.
     writeSequence(dir + "/Q2", {kTruth[0]});
-    const std::string log = runMapApp(with({"--rawlog", dir + "/Q2/sequence.rawlog", "--poses", dir + "/Q2/groundtruth.tum",
+    const std::string log = runMapApp(second, with({"--rawlog", dir + "/Q2/sequence.rawlog", "--poses", dir + "/Q2/groundtruth.tum",
                                             "--update", dir + "/M0", "--out", dir + "/M"}));
     EXPECT_NE(log.find("1 removed, 0 moved, 0 added, 0 doors closed"), std::string::npos) << log;
     for (const char* f : {"changes.json", "changes.png", "update_evidence.tsv", "objects.json"})

@@ -6,6 +6,7 @@
 #include <simp/io/Tum.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <map>
 #include <set>
@@ -34,6 +35,15 @@ std::vector<std::pair<std::size_t, std::size_t>> gatedPairs(std::size_t na, std:
     for (std::size_t i = 0; i < na; ++i)
         if (a[i] >= 0 && c(static_cast<Eigen::Index>(i), a[i]) <= gate) out.emplace_back(i, static_cast<std::size_t>(a[i]));
     return out;
+}
+
+/// The kinds of change with their scores, in the order of the command-line contract (removed,
+/// moved, added), then door_closed: one list for scoring, JSON and table.
+template <class Scores>
+auto kindsOf(Scores& s) {
+    using Score = decltype(&s.removed);  // const or not, as `s`
+    return std::array<std::pair<const char*, Score>, 4>{
+        {{"removed", &s.removed}, {"moved", &s.moved}, {"added", &s.added}, {"door_closed", &s.doors_closed}}};
 }
 
 void finish(KindScore& k) {
@@ -127,9 +137,8 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
     }
 
     // removed, moved, door_closed: by id_before.
-    for (const auto& [kind, score] : {std::pair<const char*, KindScore*>{"removed", &s.removed},
-                                      {"moved", &s.moved},
-                                      {"door_closed", &s.doors_closed}}) {
+    for (const auto& [kind, score] : kindsOf(s)) {
+        if (std::string(kind) == "added") continue;
         KindScore& k = *score;
         std::set<std::int64_t> true_ids;
         for (const auto& c : truth)
@@ -174,10 +183,7 @@ ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::
         s.added.n_reported -= extra.size();
         s.ignored_reports += extra.size();
     }
-    finish(s.removed);
-    finish(s.moved);
-    finish(s.added);
-    finish(s.doors_closed);
+    for (const auto& [kind, score] : kindsOf(s)) finish(*score);
     return s;
 }
 
@@ -188,17 +194,15 @@ nlohmann::ordered_json toJson(const ChangeScores& s) {
         return nlohmann::ordered_json{{"precision", v.precision}, {"recall", v.recall}, {"n_true", v.n_true},
                               {"n_reported", v.n_reported}, {"n_correct", v.n_correct}};
     };
-    return nlohmann::ordered_json{
-        {"removed", k(s.removed)}, {"moved", k(s.moved)}, {"added", k(s.added)}, {"door_closed", k(s.doors_closed)}};
+    nlohmann::ordered_json j;
+    for (const auto& [kind, score] : kindsOf(s)) j[kind] = k(*score);
+    return j;
 }
 
 std::string changeMarkdownTable(const ChangeScores& s) {
     std::string out = "| kind | true | reported | correct | precision | recall |\n|---|---|---|---|---|---|\n";
     char line[200];
-    for (const auto& [name, k] : {std::pair<const char*, const KindScore*>{"removed", &s.removed},
-                                  {"moved", &s.moved},
-                                  {"added", &s.added},
-                                  {"door_closed", &s.doors_closed}}) {
+    for (const auto& [name, k] : kindsOf(s)) {
         std::snprintf(line, sizeof line, "| %s | %zu | %zu | %zu | %.3f | %.3f |\n", name, k->n_true, k->n_reported,
                       k->n_correct, k->precision, k->recall);
         out += line;

@@ -319,7 +319,6 @@ void ObjectMapBuilder::flush() {
         if (c >= 0 && cost(r, c) < m_options.tau_cost) {
             // Merge: weighted centre, dimensions and SVD-projected rotation; n_match summed.
             world::MapObject& o = m_g.objects[cands[c]];
-            if (m_earlier_session) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
             setEstimate(o, mergeBoxes(estimateOf(o), o.n_match, l.box, l.n_match));
             o.n_match += l.n_match;
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
@@ -335,12 +334,12 @@ void ObjectMapBuilder::flush() {
             setEstimate(o, l.box);
             o.room_id = roomOf(o.box.center.x(), o.box.center.y());
             id_of_local[r] = o.id;
-            // Kept for new objects too: merged into an earlier object, their windows carry its
-            // heading this session (a moved object whose new place merges into its old one).
-            if (m_earlier_session) m_session_boxes[o.id].push_back({l.box, double(l.n_match)});
             added.push_back(o);
             ++m_stats.added;
         }
+        // The window's box of the object it matched or made, new objects too: merged into an
+        // earlier object later, their windows carry its heading this session (SessionTurn.h).
+        if (m_earlier_session && id_of_local[r] >= 0) m_session_boxes[id_of_local[r]].push_back({l.box, double(l.n_match)});
     }
     for (std::size_t r = 0; r < locals.size(); ++r)
         for (std::size_t q = r + 1; q < locals.size(); ++q)
