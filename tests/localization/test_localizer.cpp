@@ -15,8 +15,11 @@
 #include <simp/localization/RawlogSequence.h>
 #include <simp/obs/ObjectClasses.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <vector>
 
 using namespace simp::localization;
 using namespace simp::localization::test;
@@ -154,10 +157,11 @@ KidnapCut kidnapCut(const RawlogSequence& seq) {
     return k;
 }
 
-/// The kidnap tests' localizer on the scenario: 2000 particles, pruned particles dropped, seed 7, searching.
-std::unique_ptr<Localizer> kidnapLocalizer(const Scenario& sc, LocalizerOptions opts) {
+/// The kidnap tests' localizer on the scenario: 2000 particles, pruned particles dropped (unless
+/// prune_keeps_weight), seed 7, searching.
+std::unique_ptr<Localizer> kidnapLocalizer(const Scenario& sc, LocalizerOptions opts, bool prune_keeps_weight = false) {
     opts.experiment.particles_count = 2000;
-    opts.experiment.filter.prune_keeps_weight = false;
+    opts.experiment.filter.prune_keeps_weight = prune_keeps_weight;
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
     auto loc = std::make_unique<Localizer>(makeMap(sc.world), sc.world.floorplan, opts);
     loc->startGlobal();
@@ -199,10 +203,11 @@ TEST(Localizer, KidnappedRobotIsLostThenLocalizedAgain) {
 namespace {
 
 /// The kidnap of KidnappedRobotIsLostThenLocalizedAgain with `lost_detection_power`: over the
-/// `lost` updates whose detections the filter's own set weighed (nothing pruned, injected or
-/// resampled in between), the largest relative change of its effective sample size before
-/// resampling (0: the detections changed no weight).
-double largestEssChangeWhileLost(double lost_detection_power, std::size_t& lost_updates) {
+/// `lost` updates whose detections the filter's own set weighed with nothing injected or resampled,
+/// the largest count of particles whose log-weight changed otherwise than the common normalization
+/// shift (the median change), minus the particles pruned at that update (a pruned particle gets
+/// the smallest weight whatever the detections say). <= 0: the detections changed no weight.
+long largestWeightChangeWhileLost(double lost_detection_power, std::size_t& lost_updates) {
     const Scenario& sc = sharedScenario();
     const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
     const auto [cut, resume] = kidnapCut(seq);
@@ -212,21 +217,31 @@ double largestEssChangeWhileLost(double lost_detection_power, std::size_t& lost_
     Localizer& loc = *owned;
     for (std::size_t f = 0; f < cut; ++f) loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
     EXPECT_EQ(loc.state(), LocalizationState::Localized);
-    double largest = 0, previous = -1;
+    long largest = std::numeric_limits<long>::min();
     lost_updates = 0;
     for (std::size_t f = resume; f < seq.frames.size(); ++f) {
         const auto before = loc.state();
+        const auto particles_before = loc.filter().m_particles;
+        const std::size_t won = loc.challengersWon();
         const auto rec = loc.step(seq.frames[f].t_s, f == resume ? mrpt::poses::CPose2D() : seq.frames[f].odometry_increment,
                                   *seq.frames[f].observations);
-        if (!rec.updated) continue;
-        // Weighed in `lost` (the state before the step's update), nothing else moved a weight.
-        const bool clean = before == LocalizationState::Lost && rec.detections > 0 && rec.pruned == 0 && rec.injected == 0;
-        if (clean && previous > 0) {
-            ++lost_updates;
-            largest = std::max(largest, std::abs(rec.ess - previous) / previous);
-        }
-        // The weights carry over only when the set was not resampled (ESS above MRPT's BETA).
-        previous = clean && rec.ess > loc.options().pf.BETA * static_cast<double>(rec.particles) ? rec.ess : -1;
+        const auto& after = loc.filter().m_particles;
+        // Weighed in `lost` (the state before the step's update), nothing injected, not resampled
+        // (the weights carry over only when the effective sample size stayed above MRPT's BETA), the
+        // same set.
+        if (!rec.updated || before != LocalizationState::Lost || rec.detections == 0 || rec.injected > 0 ||
+            loc.challengersWon() != won ||  // the challenger's set replaced the own one
+            after.size() != particles_before.size() || !(rec.ess > loc.options().pf.BETA * static_cast<double>(rec.particles)))
+            continue;
+        std::vector<double> change(after.size());
+        for (std::size_t i = 0; i < after.size(); ++i) change[i] = after[i].log_w - particles_before[i].log_w;
+        auto sorted = change;
+        std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+        const double shift = sorted[sorted.size() / 2];
+        long changed = 0;
+        for (const double c : change) changed += std::abs(c - shift) > 1e-9;
+        ++lost_updates;
+        largest = std::max(largest, changed - static_cast<long>(rec.pruned));
     }
     return largest;
 }
@@ -234,15 +249,16 @@ double largestEssChangeWhileLost(double lost_detection_power, std::size_t& lost_
 }  // namespace
 
 TEST(Localizer, WhileLostTheOwnSetWeighsDetectionsWithTheLostPower) {
-    // Kidnapped, the set explains next to nothing of what it sees (every particle scores about eta),
-    // so even fully weighed the detections change its weights only slightly; at power 0 not at all.
+    // Kidnapped, the set explains little of what it sees (most particles score every detection at
+    // the floor eta: the same change), yet fully weighed the detections change the weights of some
+    // particles beyond the pruned ones; at power 0 only the pruned particles' weights change.
     std::size_t updates_full = 0, updates_none = 0;
-    const double full = largestEssChangeWhileLost(1.0, updates_full);
-    const double none = largestEssChangeWhileLost(0.0, updates_none);
+    const long full = largestWeightChangeWhileLost(1.0, updates_full);
+    const long none = largestWeightChangeWhileLost(0.0, updates_none);
     ASSERT_GT(updates_full, 3u);
     ASSERT_GT(updates_none, 3u);
-    EXPECT_GT(full, 1e-5);
-    EXPECT_LT(none, 1e-12);
+    EXPECT_GT(full, 0);
+    EXPECT_LE(none, 0);
 }
 
 TEST(FitWindow, CountsObjectsOnceWithAnObjectRadius) {
@@ -373,26 +389,26 @@ TEST(Localizer, SpreadFloorWidensACollapsedSetThatThenFindsTheTruth) {
 }
 
 TEST(Localizer, LocalResettingMovesASetStuckBesideTheTruth) {
-    // A tight set (no spread floor) 0.6 m and 0.15 rad off the truth: the neighbouring mode the
+    // A tight set (no spread floor) 0.35 m and 0.08 rad off the truth: the neighbouring mode the
     // battery's biased runs sat on, too far for the motion noise to carry it over soon. The fit
     // window prefers a pose near the truth; local resetting draws particles there and the set moves.
+    // A filter's run hangs on its random draws: compared over eight seeds, by the median time.
     const Scenario& sc = sharedScenario();
     const RawlogSequence seq = loadRawlogSequence(sc.rawlog_path);
     const auto map = makeMap(sc.world);
-    const auto run = [&](double local_margin, double local_fraction, std::size_t& injected) {
+    const auto run = [&](double local_margin, double local_fraction, unsigned seed, std::size_t& injected) {
         LocalizerOptions opts;
         opts.experiment.particles_count = 2000;
         opts.state.local_margin = local_margin;
         opts.resetting.local_fraction = local_fraction;
         opts.experiment.min_spread_xy_m = 0;
         opts.experiment.min_spread_phi_rad = 0;
-        mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(5);
+        mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(seed);
         Localizer loc(map, sc.world.floorplan, opts);
         const auto start = (mrpt::poses::CPose2D(sc.groundtruth.front().pose) + mrpt::poses::CPose2D(0.0, 0.35, 0.08)).asTPose();
         loc.startAt(start, 0.03, 0.01);
         const double t0 = seq.frames.front().t_s;
         double within_at_s = -1;
-        injected = 0;
         for (std::size_t f = 0; f < seq.frames.size() && seq.frames[f].t_s - t0 < 20.0; ++f) {
             const auto rec = loc.step(seq.frames[f].t_s, seq.frames[f].odometry_increment, *seq.frames[f].observations);
             injected += rec.injected;
@@ -401,12 +417,21 @@ TEST(Localizer, LocalResettingMovesASetStuckBesideTheTruth) {
         return within_at_s < 0 ? 1e9 : within_at_s;
     };
     std::size_t injected_on = 0, injected_off = 0;
-    const double on = run(7.0, 0.1, injected_on), off = run(0.0, 0.0, injected_off);
-    std::printf("within 0.2 m after %.1f s with local resetting (%zu particles drawn), %.1f s without\n", on, injected_on, off);
+    std::vector<double> on, off;
+    for (unsigned seed = 1; seed <= 8; ++seed) {
+        on.push_back(run(7.0, 0.1, seed, injected_on));
+        off.push_back(run(0.0, 0.0, seed, injected_off));
+    }
+    const auto median = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+    };
+    std::printf("within 0.2 m after a median %.1f s with local resetting (%zu particles drawn), %.1f s without\n",
+                median(on), injected_on, median(off));
     EXPECT_GT(injected_on, 0u);
     EXPECT_EQ(injected_off, 0u);
-    ASSERT_LT(on, 1e9) << "never within 0.2 m";
-    EXPECT_LT(on, off);
+    for (const double t : on) ASSERT_LT(t, 1e9) << "never within 0.2 m";
+    EXPECT_LT(median(on), median(off));
 }
 
 TEST(Localizer, AfterLocalizingABetterPoseNearbyEndsLocalizedButDrawsNothing) {

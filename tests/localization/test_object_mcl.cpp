@@ -58,3 +58,56 @@ TEST(ObjectMcl, EssEqualsMrpts) {
     fill(mcl, 500, 9);
     EXPECT_TRUE(sameBits(mcl.ESS(), mcl.mrpt::poses::CPosePDFParticles::ESS()));
 }
+
+namespace {
+
+/// x of the particles weighted by their weights.
+double weightedMeanX(const ObjectMcl& mcl) {
+    double sw = 0, sx = 0;
+    for (const auto& p : mcl.m_particles) sw += std::exp(p.log_w), sx += std::exp(p.log_w) * p.d.x;
+    return sx / sw;
+}
+
+/// n particles evenly on x in [0, 10], log-weight -x: the weighted mean of x is about 1, and 0.5
+/// if the weights count twice (weights e^-2x).
+double meanAfterResampling(bool resets_weights, double& mean_before, double& ess_after) {
+    const auto map = makeMap(makeWorld());
+    ObjectMcl mcl(map);
+    mcl.params.resample_resets_weights = resets_weights;
+    const std::size_t n = 2000;
+    mcl.m_particles.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = 10.0 * (static_cast<double>(i) + 0.5) / static_cast<double>(n);
+        mcl.m_particles[i].d = {x, 1.0, 0.0};
+        mcl.m_particles[i].log_w = -x;
+    }
+    mean_before = weightedMeanX(mcl);
+    mrpt::random::getRandomGenerator().randomize(3);
+    mrpt::bayes::CParticleFilter::TParticleFilterOptions pf;
+    pf.resamplingMethod = mrpt::bayes::CParticleFilter::prSystematic;
+    mcl.resample(pf);
+    EXPECT_EQ(mcl.m_particles.size(), n);
+    ess_after = mcl.ESS();
+    return weightedMeanX(mcl);
+}
+
+}  // namespace
+
+// Resampling draws copies in proportion to the weights; the copies must then weigh the same, or the
+// weights count twice (MRPT 2.5's performResampling leaves them as they were).
+TEST(ObjectMcl, ResamplingLeavesEqualWeightsAndTheSameDistribution) {
+    double before = 0, ess = 0;
+    const double after = meanAfterResampling(true, before, ess);
+    EXPECT_NEAR(before, 1.0, 0.01);
+    EXPECT_NEAR(ess, 1.0, 1e-9);  // every weight the same (up to the rounding of the sum)
+    // Systematic resampling of 2000 particles: the mean moves by at most about one particle's
+    // share of the range (10 m / 2000).
+    EXPECT_NEAR(after, before, 0.02);
+}
+
+TEST(ObjectMcl, ResamplingThatKeepsTheWeightsCountsThemTwice) {
+    double before = 0, ess = 0;
+    const double after = meanAfterResampling(false, before, ess);
+    EXPECT_LT(ess, 0.9);
+    EXPECT_NEAR(after, 0.5, 0.02);  // the mean under weights e^-2x
+}

@@ -30,6 +30,9 @@ const io::OptionTable<ExperimentOptions>& ExperimentOptions::table() {
             .flag("keep_skipped_detections", &O::keep_skipped_detections, "use the detections of the skipped frames at the next update")
             .flag("prune_keeps_weight", [](auto& o) -> auto& { return o.filter.prune_keeps_weight; }, "false: a pruned particle gets the smallest weight MRPT keeps (max log-weight - `max_loglikelihood_dyn_range`); "
                   "true: it keeps its weight (authors' code, simp-paper.ini)")
+            .flag("resample_resets_weights", [](auto& o) -> auto& { return o.filter.resample_resets_weights; },
+                  "true: equal weights after resampling (SIR); false: the copies keep their weights, as MRPT 2.5's "
+                  "performResampling leaves them (simp-paper.ini)")
             .flag("singw_per_frame", [](auto& o) -> auto& { return o.filter.singw_per_frame; }, "Eq. singw per camera frame (time stamp), multiplied over the frames of an update; false = one geometric mean over the update")
             .number("recovery_alpha_slow", [](auto& o) -> auto& { return o.filter.recovery_alpha_slow; }, "", ValueRange::fraction(), "augmented-MCL long-term rate (0 = no recovery)")
             .number("recovery_alpha_fast", [](auto& o) -> auto& { return o.filter.recovery_alpha_fast; }, "", ValueRange::fraction(), "augmented-MCL short-term rate, > `recovery_alpha_slow` when not 0")

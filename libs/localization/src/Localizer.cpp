@@ -271,7 +271,7 @@ void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::pose
             if (target != mcl.size())
                 mcl.resampleTo(target);
             else if (ess < pf.BETA)
-                mcl.performResampling(pf);
+                mcl.resample(pf);
         }
     }
     rec.updated = true;

@@ -182,6 +182,12 @@ void ObjectMcl::resampleTo(std::size_t n) {
     for (auto& p : m_particles) p.log_w = 0.0;
 }
 
+void ObjectMcl::resample(const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {
+    performResampling(PF_options);
+    if (params.resample_resets_weights)
+        for (auto& p : m_particles) p.log_w = 0.0;
+}
+
 void ObjectMcl::resetAround(const mrpt::math::TPose2D& pose, double sigma_xy_m, double sigma_phi_rad, std::size_t n) {
     if (n == 0) throw std::invalid_argument("ObjectMcl::resetAround: zero particles");
     auto& rng = mrpt::random::getRandomGenerator();

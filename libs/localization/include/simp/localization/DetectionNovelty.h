@@ -25,7 +25,7 @@
 namespace simp::localization {
 
 struct DetectionNoveltyParams {
-    double decorrelation_distance_m = 1.0;  ///< robot travel after which a detection's error is new (m); 0 = off
+    double decorrelation_distance_m = 0.5;  ///< robot travel after which a detection's error is new (m); 0 = off
     double min_weight = 0.1;                ///< weight of an immediate repeat, in (0, 1]
     double track_radius_m = 1.0;            ///< same class within this distance (odometry frame, m) = same object
     double track_timeout_s = 20.0;          ///< a track not seen for this long is forgotten (s)

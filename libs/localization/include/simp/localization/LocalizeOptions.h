@@ -46,7 +46,8 @@ struct ExperimentOptions : public mrpt::config::CLoadableOptions {
     /// The filter's own parameters, handed to ObjectMcl as they are. The project's default differs from
     /// the paper's in one: a pruned particle gets the smallest weight (prune_keeps_weight = false).
     ObjectMclParams filter{/*prune_outside_free_space=*/true, /*prune_keeps_weight=*/false,
-                           /*singw_per_frame=*/true, /*recovery_alpha_slow=*/0.0, /*recovery_alpha_fast=*/0.0};
+                           /*singw_per_frame=*/true, /*resample_resets_weights=*/true,
+                           /*recovery_alpha_slow=*/0.0, /*recovery_alpha_fast=*/0.0};
     EstimateMode estimate_mode = EstimateMode::Cluster;
     double cluster_radius_m = 0.5;        ///< cluster: particles within this distance of the peak (m)
     double cluster_max_dphi = 0.785398;   ///< cluster: and within this heading difference (rad; pi/4 as the .ini files write it)

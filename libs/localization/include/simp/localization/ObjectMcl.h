@@ -64,6 +64,9 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// change the count: it draws the first n teeth of an N-tooth comb (n < N, biased to the first
     /// particles) or runs past its arrays (n > N); doc/mrpt-issues.md.
     void resampleTo(std::size_t n);
+    /// MRPT's resampling (PF_options.resamplingMethod, same particle count), then equal weights
+    /// when params.resample_resets_weights (ObjectMclParams.h).
+    void resample(const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options);
     /// Draws `n` particles around `pose`: Gaussian with std sigma_xy_m in x and y and sigma_phi_rad
     /// in heading (zero spread allowed), equal weights.
     /// Moves every particle by zero-mean Gaussian noise (weights kept); the set's seeded generator.

@@ -16,6 +16,11 @@ struct ObjectMclParams {
     /// true: Eq. singw per camera frame (timestamp), multiplied over the frames of the update
     /// (perFrameLogLikelihoods); false: one geometric mean over all detections of the update.
     bool singw_per_frame = true;
+    /// true: every particle weighs the same after resampling (SIR: the copies carry the weights).
+    /// false: the copies keep the weights of the particles they copy, as MRPT 2.5's
+    /// CParticleFilterCapable::performResampling leaves them (its reset loop runs to its
+    /// out_particle_count argument, 0 by default): each resampling then applies the weights twice.
+    bool resample_resets_weights = true;
     /// Recovery by random particles (augmented MCL, Thrun et al., "Probabilistic Robotics", Table 8.3;
     /// not in the paper; 0 = off). After each update with K > 0 detections, w_avg = the weighted mean
     /// over the particles of the frame likelihood (Eq. singw) is smoothed into w_slow (rate alpha_slow)
