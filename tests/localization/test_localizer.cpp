@@ -157,11 +157,10 @@ KidnapCut kidnapCut(const RawlogSequence& seq) {
     return k;
 }
 
-/// The kidnap tests' localizer on the scenario: 2000 particles, pruned particles dropped (unless
-/// prune_keeps_weight), seed 7, searching.
-std::unique_ptr<Localizer> kidnapLocalizer(const Scenario& sc, LocalizerOptions opts, bool prune_keeps_weight = false) {
+/// The kidnap tests' localizer on the scenario: 2000 particles, pruned particles dropped, seed 7, searching.
+std::unique_ptr<Localizer> kidnapLocalizer(const Scenario& sc, LocalizerOptions opts) {
     opts.experiment.particles_count = 2000;
-    opts.experiment.filter.prune_keeps_weight = prune_keeps_weight;
+    opts.experiment.filter.prune_keeps_weight = false;
     mrpt::random::getRandomGenerator() = mrpt::random::CRandomGenerator(7);
     auto loc = std::make_unique<Localizer>(makeMap(sc.world), sc.world.floorplan, opts);
     loc->startGlobal();

@@ -100,9 +100,9 @@ TEST(ObjectMcl, ResamplingLeavesEqualWeightsAndTheSameDistribution) {
     const double after = meanAfterResampling(true, before, ess);
     EXPECT_NEAR(before, 1.0, 0.01);
     EXPECT_NEAR(ess, 1.0, 1e-9);  // every weight the same (up to the rounding of the sum)
-    // Systematic resampling of 2000 particles: the mean moves by at most about one particle's
-    // share of the range (10 m / 2000).
-    EXPECT_NEAR(after, before, 0.02);
+    // Systematic resampling of 2000 particles: the copies' distribution function is within 1/2000
+    // of the weights' everywhere, so the mean moves by at most the range / 2000.
+    EXPECT_NEAR(after, before, 10.0 / 2000);
 }
 
 TEST(ObjectMcl, ResamplingThatKeepsTheWeightsCountsThemTwice) {
