@@ -6,6 +6,8 @@
 #include <simp/world/ChangesFile.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using simp::geometry::makeUprightBox;
 using simp::world::ChangeRecord;
@@ -159,4 +161,71 @@ TEST(ChangesFile, RoundTripKeepsEveryField) {
     EXPECT_FALSE(out[2].id_before.has_value());
     EXPECT_NEAR((out[1].after->center - in[1].after->center).norm(), 0, 1e-12);
     EXPECT_NEAR(simp::geometry::yawOf(*out[1].after), 0.5, 1e-12);
+}
+
+TEST(ChangesFile, BeforeWorldIsKeptRelativeToTheFile) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval" / "changes_before_world";
+    fs::remove_all(dir);
+    fs::create_directories(dir / "Q");
+    fs::create_directories(dir / "W");
+    const auto path = (dir / "Q" / "changes.json").string();
+    simp::world::saveChangesFile({removed(4, "table", 1, 2)}, path, (dir / "W").string());
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"before_world\": \"../W\""), std::string::npos) << text;
+    EXPECT_TRUE(fs::equivalent(simp::world::readChangesFile(path).before_world, dir / "W"));
+    // The pair moved elsewhere still finds its world.
+    const fs::path moved = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval" / "changes_before_world_moved";
+    fs::remove_all(moved);
+    fs::rename(dir, moved);
+    EXPECT_TRUE(fs::equivalent(simp::world::readChangesFile((moved / "Q" / "changes.json").string()).before_world, moved / "W"));
+    // Without it: empty, and the entries as always.
+    simp::world::saveChangesFile({removed(4, "table", 1, 2)}, (moved / "Q" / "c2.json").string());
+    const auto plain = simp::world::readChangesFile((moved / "Q" / "c2.json").string());
+    EXPECT_TRUE(plain.before_world.empty());
+    EXPECT_EQ(plain.changes.size(), 1u);
+}
+
+TEST(ChangesFile, BeforeWorldMustNameADirectory) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(SIMP_TEST_OUTPUT_DIR) / "eval";
+    fs::create_directories(dir);
+    for (const std::string value : {"3", "\"\""}) {
+        const auto path = (dir / "changes_bad_before_world.json").string();
+        std::ofstream(path) << "{\"format\": \"simp-changes\", \"version\": 1, \"before_world\": " << value
+                            << ", \"changes\": []}";
+        try {
+            simp::world::readChangesFile(path);
+            ADD_FAILURE() << "accepted before_world = " << value;
+        } catch (const std::runtime_error& e) {
+            EXPECT_NE(std::string(e.what()).find("before_world"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(ChangeMetrics, SameObjectIdsRecognisesTheWorldItself) {
+    simp::world::ObjectMapData W;
+    W.class_names = {"table", "sofa"};
+    for (int i = 0; i < 3; ++i) {
+        simp::world::MapObject o;
+        o.id = 10 + i;
+        o.class_id = i % 2;
+        o.box = makeUprightBox({1.0 + 2 * i, 1, 0.4}, {1.0, 0.6, 0.8}, 0.0);
+        W.objects.push_back(o);
+    }
+    EXPECT_TRUE(simp::eval::sameObjectIds(W, W));
+    auto other_ids = W;
+    other_ids.objects[1].id = 99;
+    EXPECT_FALSE(simp::eval::sameObjectIds(W, other_ids));
+    auto moved = W;
+    moved.objects[2].box.center.x() += 0.05;
+    EXPECT_FALSE(simp::eval::sameObjectIds(W, moved));
+    auto renamed = W;
+    renamed.class_names = {"sofa", "table"};
+    EXPECT_FALSE(simp::eval::sameObjectIds(W, renamed));
+    auto fewer = W;
+    fewer.objects.pop_back();
+    EXPECT_FALSE(simp::eval::sameObjectIds(W, fewer));
 }

@@ -1,6 +1,7 @@
 // simp-eval end to end: in-process (EvalApp) and the real binary through std::system.
 #include <gtest/gtest.h>
 #include <simp/eval/EvalApp.h>
+#include <simp/world/ChangesFile.h>
 #include <simp/io/Tum.h>
 #include <simp/world/SimpFormat.h>
 #include <simp/world/World.h>
@@ -185,4 +186,68 @@ TEST(EvalApp, AuthorsGroundTruthMapAgainstItselfAndShifted) {
     EXPECT_EQ(j["recall"].get<double>(), 0.0);
     EXPECT_EQ(j["iou"].get<double>(), 0.0);
     ASSERT_EQ(runApp({"plot-map", "--world", gt_dir.string(), "--png", (kDir / "office_map.png").string()}, out), 0);
+}
+
+namespace {
+
+simp::world::ChangeRecord changeOf(const std::string& kind, std::int64_t id, const std::string& cls, double x,
+                                   double x_after) {
+    simp::world::ChangeRecord c;
+    c.kind = kind;
+    c.id_before = id;
+    c.class_name = cls;
+    c.before = simp::geometry::makeUprightBox({x, 2.0, 0.4}, {1.0, 1.0, 0.8}, 0.0);
+    if (kind == "moved") c.id_after = id, c.after = simp::geometry::makeUprightBox({x_after, 2.0, 0.4}, {1.0, 1.0, 0.8}, 0.0);
+    return c;
+}
+
+}  // namespace
+
+TEST(EvalApp, ChangesFindTheIdsOfABuiltMapFromTheFiles) {
+    // W: table 0 at x = 1, sofa 1 at x = 3, table 2 at x = 5. M0, a map built of W, has the same
+    // objects 0.1 m off under its own ids 100-102. The truth removes table 0 and moves sofa 1; the
+    // report (on M0) says the same in M0's ids. Each change file names the world of its ids.
+    const fs::path kDir = testDir();
+    simp::world::saveWorld(smallWorld(0.0), (kDir / "W").string());
+    auto m0 = smallWorld(0.1);
+    for (auto& o : m0.objects.objects) o.id += 100;
+    simp::world::saveWorld(m0, (kDir / "M0").string());
+    fs::create_directories(kDir / "Q");
+    fs::create_directories(kDir / "M");
+    const auto truth = (kDir / "Q" / "changes.json").string(), report = (kDir / "M" / "changes.json").string();
+    simp::world::saveChangesFile({changeOf("removed", 0, "table", 1, 0), changeOf("moved", 1, "sofa", 3, 3.8)}, truth,
+                                 (kDir / "W").string());
+    const std::vector<simp::world::ChangeRecord> on_m0 = {changeOf("removed", 100, "table", 1.1, 0),
+                                                          changeOf("moved", 101, "sofa", 3.1, 3.8)};
+    simp::world::saveChangesFile(on_m0, report, (kDir / "M0").string());
+    std::string out;
+    ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
+    EXPECT_NE(out.find("matched through their objects"), std::string::npos) << out;
+    json j = lastLineJson(out);
+    EXPECT_DOUBLE_EQ(j["removed"]["precision"].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(j["removed"]["recall"].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(j["moved"]["precision"].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(j["moved"]["recall"].get<double>(), 1.0);
+
+    // A report that does not name its map is scored by id as it stands: M0's ids are not W's.
+    simp::world::saveChangesFile(on_m0, report);
+    ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
+    j = lastLineJson(out);
+    EXPECT_DOUBLE_EQ(j["removed"]["precision"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(j["moved"]["recall"].get<double>(), 0.0);
+
+    // An update of W itself (M0 = W) speaks in W's ids: scored by id, no translation.
+    simp::world::saveChangesFile({changeOf("removed", 0, "table", 1, 0), changeOf("moved", 1, "sofa", 3, 3.8)}, report,
+                                 (kDir / "W").string());
+    ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
+    EXPECT_EQ(out.find("matched through"), std::string::npos) << out;
+    j = lastLineJson(out);
+    EXPECT_DOUBLE_EQ(j["removed"]["precision"].get<double>(), 1.0);
+    EXPECT_DOUBLE_EQ(j["moved"]["recall"].get<double>(), 1.0);
+
+    // A named map that is gone: a warning that says what to give, scores by id.
+    simp::world::saveChangesFile(on_m0, report, (kDir / "gone").string());
+    ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
+    EXPECT_NE(out.find("warning"), std::string::npos) << out;
+    EXPECT_NE(out.find("--before-world W --before-map M0"), std::string::npos) << out;
 }

@@ -168,6 +168,8 @@ TEST(MapApp, UpdatesAnEarlierMapAndReportsWhatChanged) {
     ASSERT_EQ(changes.size(), 1u);
     EXPECT_EQ(changes[0].kind, "removed");
     EXPECT_EQ(changes[0].class_name, "cabinet");
+    // The report names the map its ids are of (simp-eval changes relates them to the truth's world).
+    EXPECT_TRUE(fs::equivalent(simp::world::readChangesFile(dir + "/M/changes.json").before_world, dir + "/M0"));
     EXPECT_EQ(simp::world::loadWorld(dir + "/M").objects.objects.size(), 1u);  // the table stays
 }
 

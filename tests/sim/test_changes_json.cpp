@@ -5,10 +5,12 @@
 #include <simp/sim/Office.h>
 #include <simp/sim/Sequence.h>
 #include <simp/world/World.h>
+#include <simp/world/ChangesFile.h>
 
 #include "SimTestUtil.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -51,7 +53,9 @@ TEST(SimChangesJson, ListsExactlyTheChangesApplied) {
     p.progress = false;
     p.changes.fraction = 0.4;
     const std::string dir = simp::sim::test::clearedDir("changes_json");
-    const auto s = simp::sim::simulateSequence(W, p, 11, dir);
+    const std::string world_dir = simp::sim::test::clearedDir("changes_json_world");
+    simp::world::saveWorld(W, world_dir);
+    const auto s = simp::sim::simulateSequence(W, p, 11, dir, world_dir);
     ASSERT_GT(s.changes.removed, 0);
     ASSERT_GT(s.changes.moved, 0);
     ASSERT_GT(s.changes.added, 0);
@@ -62,6 +66,8 @@ TEST(SimChangesJson, ListsExactlyTheChangesApplied) {
     const json j = readJson(dir + "/changes.json");
     EXPECT_EQ(j.at("format"), "simp-changes");
     EXPECT_EQ(j.at("version"), 1);
+    // The world whose ids `before` speaks of, relative to the file (simp-eval changes reads it).
+    EXPECT_TRUE(std::filesystem::equivalent(simp::world::readChangesFile(dir + "/changes.json").before_world, world_dir));
     std::map<std::string, int> count;
     std::set<std::int64_t> removed, moved, added, doors;
     for (const json& c : j.at("changes")) {

@@ -65,6 +65,22 @@ std::set<int> visitedRooms(const world::RoomMap& rooms, const std::string& tum_p
     return out;
 }
 
+bool sameObjectIds(const world::ObjectMapData& world, const world::ObjectMapData& map) {
+    if (world.objects.size() != map.objects.size()) return false;
+    std::map<std::int64_t, const world::MapObject*> by_id;
+    for (const auto& o : world.objects) by_id[o.id] = &o;
+    const auto name = [](const world::ObjectMapData& m, const world::MapObject& o) {
+        return o.class_id >= 0 && static_cast<std::size_t>(o.class_id) < m.class_names.size() ? m.class_names[static_cast<std::size_t>(o.class_id)] : std::string();
+    };
+    for (const auto& o : map.objects) {
+        const auto it = by_id.find(o.id);
+        if (it == by_id.end() || name(world, *it->second) != name(map, o) ||
+            (it->second->box.center - o.box.center).norm() > 1e-3)
+            return false;
+    }
+    return true;
+}
+
 ChangeScores scoreChanges(const std::vector<ChangeRecord>& truth_in, const std::vector<ChangeRecord>& report_in,
                           const ChangeMatchParams& p, const BeforeMaps& before) {
     if (!(p.max_center_dist_m > 0)) throw std::invalid_argument("scoreChanges: max_center_dist_m must be > 0");

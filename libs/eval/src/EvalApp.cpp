@@ -36,7 +36,7 @@ io::CommandSet EvalApp::commandSet() {
         .option("max-center-dist", "M", "matching gate (m)")
         .option("classes", "a,b,...", "evaluate only these classes")
         .option("before-world", "W", "with --before-map: the report's ids are those of a built map M0, matched to\n"
-                                     "W's objects by class and centre distance")
+                                     "W's objects by class and centre distance (default: the files' before_world)")
         .option("before-map", "M0", "the built map the report's ids refer to (with --before-world)")
         .option("visited", "TUM", "Q/groundtruth.tum (with --before-world): only changes in the rooms of W the\n"
                                   "trajectory entered");

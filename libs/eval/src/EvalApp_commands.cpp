@@ -151,23 +151,53 @@ int EvalApp::runChanges(std::ostream& out) {
     }
     if (has("--before-world") != has("--before-map"))
         throw std::invalid_argument("simp-eval changes: --before-world and --before-map go together");
-    const auto truth = world::loadChangesFile(truth_path);
-    const auto report = world::loadChangesFile(report_path);
+    const auto truth_file = world::readChangesFile(truth_path);
+    const auto report_file = world::readChangesFile(report_path);
+    const auto& truth = truth_file.changes;
+    const auto& report = report_file.changes;
     world::World w, m0;
     BeforeMaps before;
+    std::string world_dir, map_dir;  // of `before`
     if (has("--before-world")) {
-        requireDir(value("--before-world"), "before world");
-        requireDir(value("--before-map"), "before map");
-        w = world::loadWorld(value("--before-world"));
-        m0 = world::loadWorld(value("--before-map"));
+        world_dir = value("--before-world"), map_dir = value("--before-map");
+        requireDir(world_dir, "before world");
+        requireDir(map_dir, "before map");
+        w = world::loadWorld(world_dir);
+        m0 = world::loadWorld(map_dir);
         before.world = &w.objects;
         before.map = &m0.objects;
+    } else if (!truth_file.before_world.empty() && !report_file.before_world.empty()) {
+        // The files name the worlds their ids belong to (the simulator's W, simp-map --update's
+        // M0): a report on a map built by simp-map speaks in that map's ids, not in W's.
+        const std::string& wd = truth_file.before_world;
+        const std::string& md = report_file.before_world;
+        if (!fs::is_directory(wd) || !fs::is_directory(md)) {
+            out << "warning: the truth's ids are those of '" << wd << "' and the report's of '" << md << "', and '"
+                << (fs::is_directory(wd) ? md : wd)
+                << "' is not a directory: removed and moved are scored by id as they stand (if the report's map "
+                   "was built by simp-map, give --before-world W --before-map M0)\n";
+        } else if (!fs::equivalent(wd, md)) {
+            w = world::loadWorld(wd);
+            m0 = world::loadWorld(md);
+            if (sameObjectIds(w.objects, m0.objects)) {
+                w = {}, m0 = {};
+            } else {
+                world_dir = wd, map_dir = md;
+                before.world = &w.objects;
+                before.map = &m0.objects;
+                out << "the report's ids are those of its map '" << md << "', the truth's those of the world '" << wd
+                    << "' (each file's before_world): matched through their objects, as --before-world and "
+                       "--before-map do\n";
+            }
+        }
     }
     if (has("--visited")) {
-        if (!before.world) throw std::invalid_argument("simp-eval changes: --visited needs --before-world (its rooms.png)");
+        if (!before.world)
+            throw std::invalid_argument("simp-eval changes: --visited needs --before-world (its rooms.png), or change "
+                                        "files whose before_world name a world and a built map");
         requireFile(value("--visited"), "visited trajectory");
         if (w.rooms.empty())
-            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + value("--before-world") +
+            throw std::invalid_argument("simp-eval changes: --visited: the before world '" + world_dir +
                                         "' has no rooms.png");
         p.rooms = &w.rooms;
         p.visited_rooms = visitedRooms(w.rooms, value("--visited"));
@@ -177,7 +207,7 @@ int EvalApp::runChanges(std::ostream& out) {
         << fmt(p.max_center_dist_m, 2) << " m)\n\n"
         << changeMarkdownTable(s);
     if (before.world)
-        out << "\nbefore map '" << value("--before-map") << "': " << s.truth_not_in_map
+        out << "\nbefore map '" << map_dir << "': " << s.truth_not_in_map
             << " true removals of objects it never had (dropped), " << s.ignored_reports
             << " reports about its ghosts or objects it had missed (ignored)\n";
     if (p.rooms) out << "scored: changes in the " << p.visited_rooms.size() << " rooms the trajectory entered\n";

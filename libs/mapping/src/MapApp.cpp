@@ -191,7 +191,7 @@ void MapApp::run() {
     eval::writePng((fs::path(m_args.out_dir) / "map.png").string(), eval::drawObjectMap(result.floorplan, result.objects));
     if (updating) {
         const fs::path dir(m_args.out_dir);
-        world::saveChangesFile(m_update.changes, (dir / "changes.json").string());
+        world::saveChangesFile(m_update.changes, (dir / "changes.json").string(), m_args.update_dir);
         saveUpdateEvidence(m_update.evidence, (dir / "update_evidence.tsv").string());
         std::set<std::int64_t> unseen_ids;
         for (const auto& e : m_update.evidence)

@@ -76,7 +76,7 @@ world::MapObject personBox(const mrpt::math::TPose2D& pose, const Eigen::Vector3
 }  // namespace
 
 SequenceSummary simulateSequence(const world::World& map_world, const SimParams& params, std::uint64_t seed,
-                                 const std::string& out_dir) {
+                                 const std::string& out_dir, const std::string& map_world_dir) {
     if (map_world.floorplan.getSizeX() == 0 || map_world.floorplan.getSizeY() == 0)
         throw std::runtime_error("simulateSequence: the world has an empty floor plan");
     if (map_world.objects.class_names.empty()) throw std::runtime_error("simulateSequence: the world has no class list");
@@ -214,7 +214,7 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     io::writeTum(out_dir + "/groundtruth.tum", traj);
     io::writeMrptGroundTruth(out_dir + "/groundtruth_mrpt.txt", traj);  // for pf-localization (doc/plugin.md)
     world::saveWorld(w, out_dir + "/world");
-    saveChangesJson(summary.changes, w.objects.class_names, out_dir + "/changes.json");
+    saveChangesJson(summary.changes, w.objects.class_names, out_dir + "/changes.json", map_world_dir);
     const std::string kidnap_path = out_dir + "/kidnap.json";
     if (summary.kidnap) saveKidnapJson(*summary.kidnap, kidnap_path);
     else if (mrpt::system::fileExists(kidnap_path) && !mrpt::system::deleteFile(kidnap_path))  // not from an older run

@@ -116,7 +116,7 @@ void SimApp::run(std::ostream& out) {
     p.validateKidnap(kidnap_at_s ? "option --kidnap-at" : "[sequence] kidnap_at_s");  // against the final duration
     if (!mrpt::system::directoryExists(world_dir)) throw std::runtime_error("world directory '" + world_dir + "' does not exist");
     const world::World w = world::loadWorld(world_dir);
-    const auto s = simulateSequence(w, p, seed, out_dir);
+    const auto s = simulateSequence(w, p, seed, out_dir, world_dir);
     out << "simp-sim: wrote " << out_dir << ": " << s.steps << " steps, " << s.camera_frames << " camera frames, "
         << s.true_detections << " object detections, " << s.person_detections << " person detections, "
         << s.phantom_detections << " phantoms, path " << s.path_length_m << " m; changes: " << s.changes.removed

@@ -20,7 +20,8 @@ const char* kindName(ObjectChange::Kind kind) {
     throw std::invalid_argument("kindName: unknown kind");
 }
 
-void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string>& class_names, const std::string& path) {
+void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string>& class_names, const std::string& path,
+                     const std::string& before_world) {
     std::vector<world::ChangeRecord> records;
     for (const ObjectChange& c : summary.changes) {
         const auto& any = c.before ? c.before : c.after;
@@ -34,7 +35,7 @@ void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string
         r.class_name = class_names[cls];
         records.push_back(std::move(r));
     }
-    world::saveChangesFile(records, path);
+    world::saveChangesFile(records, path, before_world);
 }
 
 }  // namespace simp::sim

@@ -4,6 +4,7 @@
 #include <simp/world/JsonRead.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace simp::world {
 namespace {
@@ -47,7 +48,8 @@ std::optional<geometry::Box3D> poseFromJson(const nlohmann::json& e, const std::
 
 }  // namespace
 
-void saveChangesFile(const std::vector<ChangeRecord>& changes, const std::string& path) {
+void saveChangesFile(const std::vector<ChangeRecord>& changes, const std::string& path,
+                     const std::string& before_world) {
     nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (const ChangeRecord& c : changes) {
         nlohmann::ordered_json e;
@@ -63,20 +65,36 @@ void saveChangesFile(const std::vector<ChangeRecord>& changes, const std::string
     nlohmann::ordered_json j;
     j["format"] = kChangesFormat;
     j["version"] = kChangesVersion;
+    if (!before_world.empty()) {
+        namespace fs = std::filesystem;
+        const fs::path world = fs::absolute(before_world).lexically_normal();
+        const fs::path folder = fs::absolute(path).parent_path().lexically_normal();
+        const fs::path relative = world.lexically_relative(folder);
+        j["before_world"] = (relative.empty() ? world : relative).generic_string();
+    }
     j["changes"] = list;
     writeJsonFile(j, path);
 }
 
-std::vector<ChangeRecord> loadChangesFile(const std::string& path) {
+std::vector<ChangeRecord> loadChangesFile(const std::string& path) { return readChangesFile(path).changes; }
+
+ChangesFileContent readChangesFile(const std::string& path) {
     const nlohmann::json j = readJsonFile(path);
     if (!j.is_object()) failAt(path, "", "expected a JSON object (a simp-changes file)");
     if (asString(requireKey(j, "format", path, "format"), path, "format") != kChangesFormat)
         failAt(path, "format", std::string("expected \"") + kChangesFormat + "\"");
     if (asInteger(requireKey(j, "version", path, "version"), path, "version") != kChangesVersion)
         failAt(path, "version", "unsupported version (this reader knows version 1)");
+    ChangesFileContent content;
+    if (j.contains("before_world")) {
+        const std::string dir = asString(j["before_world"], path, "before_world");
+        if (dir.empty()) failAt(path, "before_world", "expected a directory, not an empty string");
+        const std::filesystem::path p(dir);
+        content.before_world = (p.is_absolute() ? p : std::filesystem::path(path).parent_path() / p).lexically_normal().string();
+    }
     const nlohmann::json& list = requireKey(j, "changes", path, "changes");
     if (!list.is_array()) failAt(path, "changes", "expected a list");
-    std::vector<ChangeRecord> out;
+    std::vector<ChangeRecord>& out = content.changes;
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string where = "changes[" + std::to_string(i) + "]";
         const nlohmann::json& e = list[i];
@@ -103,7 +121,7 @@ std::vector<ChangeRecord> loadChangesFile(const std::string& path) {
         }
         out.push_back(std::move(c));
     }
-    return out;
+    return content;
 }
 
 }  // namespace simp::world

@@ -62,6 +62,10 @@ struct BeforeMaps {
     const world::ObjectMapData* map = nullptr;    ///< M0: the report's ids
 };
 
+/// True when `map` holds `world`'s objects under the same ids (as many, and per id the same class
+/// name and a centre within 1 mm): a report on `map` then speaks in the truth's ids (e.g. M0 = W).
+bool sameObjectIds(const world::ObjectMapData& world, const world::ObjectMapData& map);
+
 /// Scores `report` against `truth`. \throw std::invalid_argument when params are out of range.
 ChangeScores scoreChanges(const std::vector<world::ChangeRecord>& truth, const std::vector<world::ChangeRecord>& report,
                           const ChangeMatchParams& params = {}, const BeforeMaps& before = {});

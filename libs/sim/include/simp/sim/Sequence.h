@@ -34,10 +34,12 @@ struct SequenceSummary {
 /// comes from `seed`; the same inputs give byte-identical files (simulated time from
 /// params.epoch_s, never the wall clock). The kidnap draws from a stream split off after all
 /// others, so without it every file is as before the kidnap existed.
+/// `map_world_dir` (optional): the directory `map_world` was read from, named in changes.json as
+/// the world its `before` ids belong to.
 /// \throw std::runtime_error naming the file that cannot be written or the map that has no room
 /// for the robot; std::invalid_argument for kidnap_at_s beyond the duration.
 SequenceSummary simulateSequence(const world::World& map_world, const SimParams& params, std::uint64_t seed,
-                                 const std::string& out_dir);
+                                 const std::string& out_dir, const std::string& map_world_dir = {});
 
 /// Draws the world (floor plan, object footprints coloured by class) and the true `trajectory`
 /// (green, circle at the start) to a PNG with a scale bar and a legend (simp::eval::drawTrajectoryMap).

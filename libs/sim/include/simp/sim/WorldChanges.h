@@ -56,7 +56,8 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
 /// Writes `summary.changes` as the change file `path` (doc/formats.md "changes.json"; an
 /// empty list when nothing changed). `class_names` names the objects' class ids.
 /// \throw std::runtime_error naming the file when it cannot be written.
-void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string>& class_names, const std::string& path);
+void saveChangesJson(const ChangeSummary& summary, const std::vector<std::string>& class_names, const std::string& path,
+                     const std::string& before_world = {});
 
 /// Blocks the wall gap a door object stands in (free cells between wall cells on both sides of
 /// the door along its width).
