@@ -11,14 +11,17 @@
 #include <simp/obs/CObservationObjects3D.h>
 #include <simp/obs/registerAllClasses.h>
 #include <simp/sim/Office.h>
+#include <simp/sim/Raster.h>
 #include <simp/sim/Sequence.h>
 #include <simp/sim/WorldChanges.h>
 #include <simp/world/SimpFormat.h>
 
 #include "SimTestUtil.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace {
@@ -175,6 +178,50 @@ TEST(SimChanges, AMovedObjectStaysInItsRoom) {
         }
     }
     EXPECT_GT(moves, 50);  // a third of the non-door objects per draw
+}
+
+namespace {
+
+/// Rooms (ids of rooms.png) with a cell in the largest area a disc of radius r can drive in.
+std::set<int> drivableRooms(const simp::world::World& w, double r) {
+    const auto cspace = simp::sim::inflate(simp::sim::drivingObstacles(w), r);
+    const auto area = simp::sim::largestFreeArea(cspace, simp::sim::clearance(cspace));
+    std::set<int> rooms;
+    for (int cy = 0; cy < cspace.ny; ++cy)
+        for (int cx = 0; cx < cspace.nx; ++cx)
+            if (area[static_cast<std::size_t>(cy) * cspace.nx + cx])
+                rooms.insert(w.rooms.roomAt(cspace.centreX(cx), cspace.centreY(cy)));
+    rooms.erase(0);
+    return rooms;
+}
+
+/// Over `seeds` draws of every object changed (no door closed): the draws after which a room
+/// the robot could drive to before is out of its reach.
+int drawsThatCutOffARoom(const simp::world::World& map, double passage_radius_m, int seeds) {
+    simp::sim::ChangeParams p;
+    p.fraction = 1.0;
+    p.door_close_fraction = 0.0;
+    p.passage_radius_m = passage_radius_m;
+    const double r = 0.4;  // the trajectory's robot radius + clearance
+    const auto before = drivableRooms(map, r);
+    int cut = 0;
+    for (int seed = 1; seed <= seeds; ++seed) {
+        simp::sim::Rng rng(static_cast<std::uint64_t>(seed));
+        const auto after = drivableRooms(simp::sim::applyChanges(map, p, rng), r);
+        cut += std::any_of(before.begin(), before.end(), [&](int room) { return !after.count(room); });
+    }
+    return cut;
+}
+
+}  // namespace
+
+TEST(SimChanges, AddedOrMovedFurnitureKeepsEveryRoomReachable) {
+    // A facility keeps its corridors and doorways passable: an added table across a corridor
+    // cut off the rooms beyond it, and a coverage run after the change never saw them.
+    simp::sim::OfficeParams office;
+    const auto map = simp::sim::generateOffice(office, 2);
+    ASSERT_GT(drawsThatCutOffARoom(map, 0.0, 8), 0) << "without the rule some draw closes a passage";
+    EXPECT_EQ(drawsThatCutOffARoom(map, 0.4, 8), 0);
 }
 
 TEST(SimSequence, RunsInTheImportedAuthorsOffice) {

@@ -91,7 +91,10 @@ SequenceSummary simulateSequence(const world::World& map_world, const SimParams&
     SequenceSummary summary;
 
     // the world of this sequence (long-term change) and what the robot must drive around
-    const world::World w = applyChanges(map_world, params.changes, rng_changes, &summary.changes);
+    ChangeParams change_params = params.changes;
+    if (change_params.passage_radius_m < 0)
+        change_params.passage_radius_m = params.trajectory.robot_radius_m + params.trajectory.clearance_m;
+    const world::World w = applyChanges(map_world, change_params, rng_changes, &summary.changes);
     const auto& names = w.objects.class_names;
     const int person_class = w.objects.classId("person");
     const Raster walls = wallRaster(w.floorplan);

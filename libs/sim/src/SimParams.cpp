@@ -101,6 +101,7 @@ const io::OptionTable<ChangeParams>& ChangeParams::table() {
             .number("shift_max_m", &O::shift_max_m, "m", ValueRange::finite(), "the same, maximum")
             .number("rotation_std_deg", &O::rotation_std_deg, "deg", ValueRange::atLeast(0), "and rotated by N(0, std)")
             .number("door_close_fraction", &O::door_close_fraction, "", ValueRange::atMost(1), "fraction of doors closed (gap blocked, door object kept); < 0: the same as `fraction`")
+            .number("passage_radius_m", &O::passage_radius_m, "m", ValueRange::atMost(10), "a moved or added object never cuts off floor a disc of this radius reaches (every room keeps a way in; it may take its own footprint grown by the radius and 2 m^2 of pocket); < 0: the robot's radius + clearance of [trajectory]; 0 = off")
             .rule("shift_max_m", [](const O& o) { return o.shift_max_m >= o.shift_min_m; }, "be >= shift_min_m");
     return t;
 }

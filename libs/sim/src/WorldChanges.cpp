@@ -45,6 +45,56 @@ bool staysInItsRoom(const Eigen::Vector2d& from, const Eigen::Vector2d& to, cons
     return room <= 0 || w.rooms.roomAt(to.x(), to.y()) == room;
 }
 
+/// The cells of the largest area a disc of radius `r` can drive in (Trajectory's goal area).
+std::vector<std::uint8_t> drivableArea(const world::World& w, double r) {
+    const Raster cspace = inflate(drivingObstacles(w), r);
+    return largestFreeArea(cspace, clearance(cspace));
+}
+
+/// Keeps the passages: `candidate` (the world with one object placed or moved) leaves the robot the
+/// area `before` (drivableArea of the world without it) but for the object's footprint grown by `r`
+/// and a pocket (kPocketM2), and a way into every room it could drive into. An added table across a
+/// corridor cuts off the rooms beyond it.
+class PassageKeeper {
+   public:
+    /// Floor it may cut off beyond its own: a pocket behind furniture, not a room (m^2).
+    static constexpr double kPocketM2 = 2.0;
+    explicit PassageKeeper(double r) : m_r(r) {}
+    bool keeps(const world::World& before, const world::World& candidate, const world::MapObject& placed) {
+        if (m_r <= 0) return true;
+        if (m_area.empty()) m_area = drivableArea(before, m_r), m_rooms = roomsIn(before, m_area);
+        const auto after = drivableArea(candidate, m_r);
+        std::size_t lost = 0;
+        for (std::size_t i = 0; i < after.size() && i < m_area.size(); ++i) lost += m_area[i] && !after[i];
+        const Raster walls = wallRaster(candidate.floorplan);
+        const double cell = walls.resolution_m * walls.resolution_m;
+        const Eigen::Vector3d& s = placed.box.size;
+        const double grown = (s.x() + 2 * m_r) * (s.y() + 2 * m_r) - (4 - M_PI) * m_r * m_r;
+        return static_cast<double>(lost) * cell <= grown + kPocketM2 && roomsIn(candidate, after) == m_rooms;
+    }
+    /// The world changed: the next check recomputes the area.
+    void changed() { m_area.clear(); }
+
+   private:
+    /// The rooms (ids > 0 of the room map; none without one) with a cell of `area`.
+    static std::vector<int> roomsIn(const world::World& w, const std::vector<std::uint8_t>& area) {
+        std::vector<int> ids;
+        if (w.rooms.empty()) return ids;
+        const Raster walls = wallRaster(w.floorplan);
+        for (int cy = 0; cy < walls.ny; ++cy)
+            for (int cx = 0; cx < walls.nx; ++cx)
+                if (area[static_cast<std::size_t>(cy) * walls.nx + cx]) {
+                    const int id = w.rooms.roomAt(walls.centreX(cx), walls.centreY(cy));
+                    if (id > 0 && std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
+                }
+        std::sort(ids.begin(), ids.end());
+        return ids;
+    }
+    double m_r;
+    std::vector<std::uint8_t> m_area;
+    std::vector<int> m_rooms;
+};
+
 }  // namespace
 
 void closeDoor(world::World& world, const world::MapObject& door) {
@@ -90,6 +140,7 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
     const std::size_t n_remove = n_change / 3, n_move = n_change / 3, n_add = n_change - n_remove - n_move;
     for (std::size_t i = others.size(); i > 1; --i) std::swap(others[i - 1], others[rng.index(i)]);
     const Raster walls = wallRaster(w.floorplan);
+    PassageKeeper passages(p.passage_radius_m);
 
     std::vector<bool> drop(w.objects.objects.size(), false);
     for (std::size_t k = 0; k < n_remove && k < others.size(); ++k) drop[others[k]] = true;
@@ -104,8 +155,12 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
             const Eigen::Vector3d c = orig.box.center + Eigen::Vector3d(dist * std::cos(dir), dist * std::sin(dir), 0);
             o.box = geometry::makeUprightBox(c, orig.box.size, yaw);
             if (staysInItsRoom(orig.box.center.head<2>(), c.head<2>(), w) && fits(o, walls, w, i)) {
+                world::World candidate = w;
+                candidate.objects.objects[i] = o;
+                if (!passages.keeps(w, candidate, o)) continue;
                 if (!w.rooms.empty()) o.room_id = w.rooms.roomAt(c.x(), c.y());
                 w.objects.objects[i] = o;
+                passages.changed();
                 moved = true;
             }
         }
@@ -138,6 +193,10 @@ world::World applyChanges(const world::World& map, const ChangeParams& p, Rng& r
             const double yaw = 0.5 * M_PI * static_cast<double>(rng.index(4));
             o.box = geometry::makeUprightBox({walls.centreX(cx), walls.centreY(cy), z0 + 0.5 * size.z()}, size, yaw);
             if (!fits(o, walls, w, w.objects.objects.size())) continue;
+            world::World candidate = w;
+            candidate.objects.objects.push_back(o);
+            if (!passages.keeps(w, candidate, o)) continue;
+            passages.changed();
             if (!w.rooms.empty()) o.room_id = w.rooms.roomAt(walls.centreX(cx), walls.centreY(cy));
             w.objects.objects.push_back(o);
             drop.push_back(false);
