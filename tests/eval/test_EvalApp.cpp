@@ -250,4 +250,11 @@ TEST(EvalApp, ChangesFindTheIdsOfABuiltMapFromTheFiles) {
     ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
     EXPECT_NE(out.find("warning"), std::string::npos) << out;
     EXPECT_NE(out.find("--before-world W --before-map M0"), std::string::npos) << out;
+
+    // A named folder that is no world: a warning naming what failed, scores by id.
+    fs::create_directories(kDir / "not_a_world");
+    simp::world::saveChangesFile(on_m0, report, (kDir / "not_a_world").string());
+    ASSERT_EQ(runApp({"changes", "--truth", truth, "--report", report, "--json"}, out), 0);
+    EXPECT_NE(out.find("cannot be read"), std::string::npos) << out;
+    EXPECT_DOUBLE_EQ(lastLineJson(out)["removed"]["precision"].get<double>(), 0.0);
 }

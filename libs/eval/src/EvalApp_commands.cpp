@@ -177,9 +177,15 @@ int EvalApp::runChanges(std::ostream& out) {
                 << "' is not a directory: removed and moved are scored by id as they stand (if the report's map "
                    "was built by simp-map, give --before-world W --before-map M0)\n";
         } else if (!fs::equivalent(wd, md)) {
-            w = world::loadWorld(wd);
-            m0 = world::loadWorld(md);
-            if (sameObjectIds(w.objects, m0.objects)) {
+            try {
+                w = world::loadWorld(wd);
+                m0 = world::loadWorld(md);
+            } catch (const std::exception& e) {
+                out << "warning: the change files' before_world cannot be read (" << e.what()
+                    << "): removed and moved are scored by id as they stand\n";
+                w = {}, m0 = {};
+            }
+            if (w.objects.objects.empty() || sameObjectIds(w.objects, m0.objects)) {
                 w = {}, m0 = {};
             } else {
                 world_dir = wd, map_dir = md;

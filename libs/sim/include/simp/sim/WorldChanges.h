@@ -23,8 +23,9 @@ struct ChangeParams {
     double door_close_fraction = -1; ///< fraction of doors closed; < 0: the same as `fraction`
     /// A moved or added object may not cut off floor the robot could drive to: the largest area a
     /// disc of this radius (m) can reach must keep a cell in every room it had one in and lose no
-    /// more than the object's own footprint grown by the radius (plus 2 m^2 of pocket). < 0: the trajectory's robot_radius_m + clearance_m
-    /// (simulateSequence); 0 = off (before 2026-12-07: an added table could close a corridor).
+    /// more than the object's own footprint grown by the radius (plus 2 m^2 of pocket).
+    /// < 0: the trajectory's robot_radius_m + clearance_m (simulateSequence); 0 = off (before
+    /// 2026-12-07: an added table could close a corridor).
     double passage_radius_m = -1;
 
     /// [changes] keys, declared once (SimParams.cpp).
