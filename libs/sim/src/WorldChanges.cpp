@@ -66,8 +66,7 @@ class PassageKeeper {
         const auto after = drivableArea(candidate, m_r);
         std::size_t lost = 0;
         for (std::size_t i = 0; i < after.size() && i < m_area.size(); ++i) lost += m_area[i] && !after[i];
-        const Raster walls = wallRaster(candidate.floorplan);
-        const double cell = walls.resolution_m * walls.resolution_m;
+        const double res = candidate.floorplan.getResolution(), cell = res * res;
         const Eigen::Vector3d& s = placed.box.size;
         const double grown = (s.x() + 2 * m_r) * (s.y() + 2 * m_r) - (4 - M_PI) * m_r * m_r;
         return static_cast<double>(lost) * cell <= grown + kPocketM2 && roomsIn(candidate, after) == m_rooms;
@@ -80,11 +79,13 @@ class PassageKeeper {
     static std::vector<int> roomsIn(const world::World& w, const std::vector<std::uint8_t>& area) {
         std::vector<int> ids;
         if (w.rooms.empty()) return ids;
-        const Raster walls = wallRaster(w.floorplan);
-        for (int cy = 0; cy < walls.ny; ++cy)
-            for (int cx = 0; cx < walls.nx; ++cx)
-                if (area[static_cast<std::size_t>(cy) * walls.nx + cx]) {
-                    const int id = w.rooms.roomAt(walls.centreX(cx), walls.centreY(cy));
+        // `area` is laid out as the floor plan's cells (wallRaster).
+        const auto& g = w.floorplan;
+        const int nx = static_cast<int>(g.getSizeX()), ny = static_cast<int>(g.getSizeY());
+        for (int cy = 0; cy < ny; ++cy)
+            for (int cx = 0; cx < nx; ++cx)
+                if (area[static_cast<std::size_t>(cy) * nx + cx]) {
+                    const int id = w.rooms.roomAt(g.idx2x(cx), g.idx2y(cy));
                     if (id > 0 && std::find(ids.begin(), ids.end(), id) == ids.end()) ids.push_back(id);
                 }
         std::sort(ids.begin(), ids.end());
