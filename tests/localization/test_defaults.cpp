@@ -179,6 +179,7 @@ void expectSame(const LidarModelOptions& a, const LidarModelOptions& b) {
 void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b) {
     SIMP_EXPECT_SAME(decorrelation_distance_m);
     SIMP_EXPECT_SAME(min_weight);
+    SIMP_EXPECT_SAME(view_change_weight);
     SIMP_EXPECT_SAME(track_radius_m);
     SIMP_EXPECT_SAME(track_timeout_s);
     SIMP_EXPECT_SAME(unmapped_min_detections);

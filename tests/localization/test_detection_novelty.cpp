@@ -5,6 +5,8 @@
 #include "TestUtil.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <simp/localization/DetectionNovelty.h>
 #include <simp/localization/LocalizationState.h>
 
@@ -28,9 +30,35 @@ TEST(DetectionNovelty, RepeatsFromOnePlaceWeighLittleNewViewpointsFully) {
     EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6)[0], 1.0);
     // Forgotten after the timeout; off when the distance is 0.
     EXPECT_EQ(n.weigh(*observe(w, robot_far, {0}), odo + far, 0.6 + p.track_timeout_s + 1)[0], 1.0);
-    DetectionNovelty off(DetectionNoveltyParams{0.0, 0.1, 1.0, 20.0});
+    DetectionNovelty off(DetectionNoveltyParams{0.0, 0.1, 0.0, 1.0, 20.0});
     off.weigh(*observe(w, robot, {0}), odo, 0.0);
     EXPECT_EQ(off.weigh(*observe(w, robot, {0}), odo, 0.1)[0], 1.0);
+}
+
+TEST(DetectionNovelty, ATurnOnTheSpotIsPartlyANewViewWhenViewChangeCounts) {
+    const auto w = makeWorld();
+    const Eigen::Vector3d desk = w.objects.objects[0].box.center;
+    const double turn_rad = 0.1;
+    const mrpt::math::TPose2D before(3.0, 2.0, 0.4), after(3.0, 2.0, 0.4 + turn_rad);
+    for (const double view_change_weight : {0.0, 0.5}) {
+        DetectionNoveltyParams p;
+        p.view_change_weight = view_change_weight;
+        DetectionNovelty n(p);
+        n.weigh(*observe(w, before, {0}), mrpt::poses::CPose2D(before), 0.0);
+        const double weight = n.weigh(*observe(w, after, {0}), mrpt::poses::CPose2D(after), 0.2)[0];
+        if (view_change_weight == 0.0) {
+            EXPECT_EQ(weight, p.min_weight);  // no travel: a repeat
+            continue;
+        }
+        // Turning by a about the robot's centre moves a point at horizontal distance r from it by
+        // 2 r sin(a / 2) in every frame fixed on the robot, the camera's included.
+        const double r = std::hypot(desk.x() - before.x, desk.y() - before.y);
+        EXPECT_NEAR(weight, view_change_weight * 2 * r * std::sin(turn_rad / 2) / p.decorrelation_distance_m, 1e-9);
+        EXPECT_GT(weight, 0.2);
+        // Travel still counts as before: the larger of the two.
+        const mrpt::math::TPose2D ahead(3.0 + std::cos(after.phi), 2.0 + std::sin(after.phi), after.phi);
+        EXPECT_EQ(n.weigh(*observe(w, ahead, {0}), mrpt::poses::CPose2D(ahead), 0.4)[0], 1.0);
+    }
 }
 
 namespace {

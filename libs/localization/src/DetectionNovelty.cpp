@@ -45,15 +45,22 @@ std::vector<double> DetectionNovelty::weigh(const simp::obs::CObservationObjects
                                   [&](const Track& tr) { return t_s - tr.last_t_s > m_params.track_timeout_s; }),
                    m_tracks.end());
     const Eigen::Vector2d viewpoint(odometry_pose.x(), odometry_pose.y());
+    const mrpt::poses::CPose3D camera = mrpt::poses::CPose3D(odometry_pose) + obs.cameraPose();
     for (std::size_t k = 0; k < obs.size(); ++k) {
         const Eigen::Vector2d centre = centreInOdometry(obs, k, odometry_pose);
         const std::string& name = obs.classNameOf(obs.detections()[k]);
         Track* best = nearest(name, centre);
         if (best == nullptr) {
-            m_tracks.push_back({name, centre, viewpoint, t_s, centre, 1});
+            m_tracks.push_back({name, centre, viewpoint, camera, t_s, centre, 1});
             continue;
         }
-        const double moved = (viewpoint - best->viewpoint_odom_m).norm();
+        double moved = (viewpoint - best->viewpoint_odom_m).norm();
+        if (m_params.view_change_weight > 0.0) {
+            // The object's centre seen from the last detection's camera and from this one.
+            const mrpt::math::TPoint3D c(centre.x(), centre.y(), obs.boxInRobot(k).center.z());
+            const double shift = (camera.inverseComposePoint(c) - best->camera_odom.inverseComposePoint(c)).norm();
+            moved = std::max(moved, m_params.view_change_weight * shift);
+        }
         if (best->unmapped)
             weights[k] = 0.0;
         else if (temper)
@@ -62,6 +69,7 @@ std::vector<double> DetectionNovelty::weigh(const simp::obs::CObservationObjects
         best->sum_odom_m += centre;
         ++best->detected;
         best->viewpoint_odom_m = viewpoint;
+        best->camera_odom = camera;
         best->last_t_s = t_s;
     }
     return weights;

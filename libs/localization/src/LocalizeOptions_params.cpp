@@ -44,6 +44,8 @@ const io::OptionTable<DetectionNoveltyParams>& noveltyParamsTable() {
             .number("decorrelation_distance_m", &O::decorrelation_distance_m, "m", ValueRange::nonNegative(),
                     "robot travel after which a detection's error is new; 0 = off")
             .number("min_weight", &O::min_weight, "", ValueRange::aboveUpTo(0, 1), "weight of an immediate repeat")
+            .number("view_change_weight", &O::view_change_weight, "", ValueRange::fraction(),
+                    "the distance is also this times how far the object moved in the camera's frame (turns); 0 = travel only")
             .number("track_radius_m", &O::track_radius_m, "m", ValueRange::positive(), "same class within this distance = same object")
             .number("track_timeout_s", &O::track_timeout_s, "s", ValueRange::positive(), "a track not seen for this long is forgotten")
             .integer("unmapped_min_detections", &O::unmapped_min_detections, ValueRange::between(0, 1e6),

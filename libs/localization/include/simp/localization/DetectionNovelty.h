@@ -16,6 +16,7 @@
 ///    its displacement wherever little else is seen.
 
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <Eigen/Core>
@@ -27,6 +28,8 @@ namespace simp::localization {
 struct DetectionNoveltyParams {
     double decorrelation_distance_m = 0.5;  ///< robot travel after which a detection's error is new (m); 0 = off
     double min_weight = 0.1;                ///< weight of an immediate repeat, in (0, 1]
+    /// d is also this times the object's displacement in the camera frame (turns); 0 = travel only
+    double view_change_weight = 0.0;
     double track_radius_m = 1.0;            ///< same class within this distance (odometry frame, m) = same object
     double track_timeout_s = 20.0;          ///< a track not seen for this long is forgotten (s)
     /// A track is unmapped after this many of its detections were judged (0 = off) ...
@@ -71,6 +74,7 @@ class DetectionNovelty {
         std::string class_name;
         Eigen::Vector2d centre_odom_m;    ///< last detected centre (odometry frame)
         Eigen::Vector2d viewpoint_odom_m; ///< robot position at the last detection (odometry frame)
+        mrpt::poses::CPose3D camera_odom; ///< pose of the camera of the last detection (odometry frame)
         double last_t_s = 0;
         /// The mean of its detected centres (odometry frame): an unmapped object is matched to it,
         /// as its detections scatter by the detector's noise about the object.
