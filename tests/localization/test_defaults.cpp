@@ -111,6 +111,8 @@ void expectSame(const StateParams& a, const StateParams& b) {
     SIMP_EXPECT_SAME(localized_min_updates);
     SIMP_EXPECT_SAME(lost_window);
     SIMP_EXPECT_SAME(lost_max_fit);
+    SIMP_EXPECT_SAME(lost_tolerance_m);
+    SIMP_EXPECT_SAME(lost_tolerance_rad);
     SIMP_EXPECT_SAME(lost_min_weight);
     SIMP_EXPECT_SAME(rival_margin);
     SIMP_EXPECT_SAME(rival_lost_margin);

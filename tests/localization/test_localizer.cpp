@@ -64,6 +64,33 @@ TEST(FitWindow, ExplainsDetectionsAtTheRightPoseOnly) {
     EXPECT_LT(wrong.fraction, 0.5);
 }
 
+TEST(FitWindow, TheLostTestCountsDetectionsExplainedWithinItsTolerance) {
+    const auto w = makeWorld();
+    const auto map = makeMap(w);
+    StateParams p;
+    p.lost_window = 4;
+    const mrpt::math::TPose2D robot(3.0, 2.0, 0.4);
+    const mrpt::poses::CPose2D odo(robot);
+    const auto fitAt = [&](double tolerance_m, const mrpt::poses::CPose2D& estimate) {
+        StateParams q = p;
+        q.lost_tolerance_m = tolerance_m;
+        q.lost_tolerance_rad = tolerance_m > 0 ? 0.1 : 0.0;
+        FitWindow fit(q);
+        fit.add(*map, observe(w, robot, {0, 1, 2, 3}), odo, 0.0);
+        return fit.evaluate(*map, estimate, odo, 0.0);
+    };
+    // 0.3 m off: at the estimate alone most of the exact detections are unexplained (class noise
+    // 0.15 m); within a tolerance that reaches back to the truth, all of them.
+    const mrpt::poses::CPose2D off(robot.x + 0.3, robot.y, robot.phi);  // the grid is along x and y
+    const auto strict = fitAt(0.0, off), tolerant = fitAt(0.3, off);
+    ASSERT_EQ(strict.recent_scored, 4u);
+    EXPECT_LT(strict.recent_fraction, 0.5);
+    EXPECT_DOUBLE_EQ(tolerant.recent_fraction, 1.0);
+    EXPECT_DOUBLE_EQ(tolerant.fraction, strict.fraction);  // only the lost test is tolerant
+    // Far off (a kidnap): no pose within the tolerance explains them either.
+    EXPECT_DOUBLE_EQ(fitAt(0.3, odo + mrpt::poses::CPose2D(3.0, 2.0, 1.0)).recent_fraction, 0.0);
+}
+
 TEST(FitWindow, CountsTheDistinctObjectsItExplains) {
     // Desk, chair and cabinet, then the chair, the cabinet and the board again from 0.5 m further:
     // six detections of four objects (exact boxes: the two views of one object coincide in the

@@ -40,22 +40,11 @@ std::vector<FitWindow::Judged> FitWindow::judgeAt(const maps::CObjectMap& map, c
                                                   const mrpt::poses::CPose2D& odometry_now, double t_s,
                                                   double tolerance_m, double tolerance_rad) const {
     std::vector<Judged> out;
-    const auto model = map.sensorModel();
     const double log_explained = logExplained(map);
     for (auto it = m_items.rbegin(); it != m_items.rend() && it->t_s == t_s; ++it) {
-        // Prepared once, scored at up to 27 poses (as scorePoses() does for the whole window).
-        const auto prepared = model->prepare(it->map_class, it->obs->boxInRobot(it->k), it->obs->footprintInRobot(it->k));
-        if (!prepared) continue;
-        const mrpt::poses::CPose2D rel = it->odometry_pose - odometry_now;
-        bool explained = false;
-        for (int i = -1; i <= 1 && !explained; ++i)
-            for (int j = -1; j <= 1 && !explained; ++j)
-                for (int h = -1; h <= 1 && !explained; ++h) {
-                    const mrpt::poses::CPose2D pose(estimate.x() + i * tolerance_m, estimate.y() + j * tolerance_m,
-                                                    estimate.phi() + h * tolerance_rad);
-                    explained = model->logLikelihood(*prepared, (pose + rel).asTPose()) >= log_explained;
-                }
-        out.push_back({it->obs.get(), it->k, it->odometry_pose, explained});
+        const auto explained = explainedNear(map, *it, estimate, odometry_now, tolerance_m, tolerance_rad, log_explained);
+        if (!explained) continue;
+        out.push_back({it->obs.get(), it->k, it->odometry_pose, *explained});
     }
     return out;
 }
@@ -74,6 +63,24 @@ std::optional<double> FitWindow::logLikelihoodAt(const maps::CObjectMap& map, co
     return map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
 }
 
+std::optional<bool> FitWindow::explainedNear(const maps::CObjectMap& map, const Item& it, const mrpt::poses::CPose2D& estimate,
+                              const mrpt::poses::CPose2D& odometry_now, double tolerance_m, double tolerance_rad,
+                              double log_explained) {
+    const auto model = map.sensorModel();
+    // Prepared once, scored at up to 27 poses (as scorePoses() does for the whole window).
+    const auto prepared = model->prepare(it.map_class, it.obs->boxInRobot(it.k), it.obs->footprintInRobot(it.k));
+    if (!prepared) return std::nullopt;
+    const mrpt::poses::CPose2D rel = it.odometry_pose - odometry_now;
+    for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j)
+            for (int h = -1; h <= 1; ++h) {
+                const mrpt::poses::CPose2D pose(estimate.x() + i * tolerance_m, estimate.y() + j * tolerance_m,
+                                                estimate.phi() + h * tolerance_rad);
+                if (model->logLikelihood(*prepared, (pose + rel).asTPose()) >= log_explained) return true;
+            }
+    return false;
+}
+
 double FitWindow::logExplained(const maps::CObjectMap& map) const {
     return std::log(m_params.explained_ratio * map.likelihoodOptions.eta);
 }
@@ -89,13 +96,20 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
         int map_class;
         double x, y;
         bool explained;
+        bool near;  ///< explained within the lost test's tolerance (checked for the recent ones only)
     };
+    const bool tolerant = m_params.lost_tolerance_m > 0 || m_params.lost_tolerance_rad > 0;
     std::vector<Object> objects;
     const double r2 = m_params.object_radius_m * m_params.object_radius_m;
     for (auto it = m_items.rbegin(); it != m_items.rend(); ++it) {
         const auto log_p = logLikelihoodAt(map, *it, estimate, odometry_now);
         if (!log_p) continue;
         const bool ok = *log_p >= log_explained;
+        // Only detections that may enter the lost test's window pay for the grid.
+        const bool near = !ok && tolerant && objects.size() <= m_params.lost_window &&
+                          explainedNear(map, *it, estimate, odometry_now, m_params.lost_tolerance_m,
+                                        m_params.lost_tolerance_rad, log_explained)
+                                  .value_or(false);
         Object* same = nullptr;
         if (m_params.object_radius_m > 0)
             for (auto& o : objects)
@@ -104,15 +118,15 @@ FitWindow::Fit FitWindow::evaluate(const maps::CObjectMap& map, const mrpt::pose
                     break;
                 }
         if (same)
-            same->explained = same->explained || ok;
+            same->explained = same->explained || ok, same->near = same->near || near;
         else
-            objects.push_back({it->map_class, it->odo_x, it->odo_y, ok});
+            objects.push_back({it->map_class, it->odo_x, it->odo_y, ok, near});
     }
     std::size_t explained = 0, recent_explained = 0;
     for (const auto& o : objects) {
         ++fit.scored;
         explained += o.explained;
-        if (fit.recent_scored < m_params.lost_window) ++fit.recent_scored, recent_explained += o.explained;
+        if (fit.recent_scored < m_params.lost_window) ++fit.recent_scored, recent_explained += o.explained || o.near;
     }
     if (fit.scored > 0) fit.fraction = static_cast<double>(explained) / static_cast<double>(fit.scored);
     if (fit.recent_scored > 0)

@@ -24,6 +24,9 @@ const io::OptionTable<StateParams>& stateParamsTable() {
             .integer("localized_min_updates", &O::localized_min_updates, kCount, "... over this many consecutive updates with detections")
             .integer("lost_window", &O::lost_window, kCount, "the lost test looks at this many last detections ...")
             .number("lost_max_fit", &O::lost_max_fit, "", ValueRange::fraction(), "localized -> lost when their fit falls to this ...")
+            .number("lost_tolerance_m", &O::lost_tolerance_m, "m", ValueRange::nonNegative(),
+                    "... a detection explained there also at a pose this far off in x and y ...; 0 = at the estimate only")
+            .number("lost_tolerance_rad", &O::lost_tolerance_rad, "rad", ValueRange::nonNegative(), "... and this far turned")
             .number("lost_min_weight", &O::lost_min_weight, "", ValueRange::fraction(), "... or the cluster weight under this ...")
             .number("rival_margin", &O::rival_margin, "nats", ValueRange::nonNegative(), "localized needs the estimate to beat every distinct pose by this")
             .number("rival_lost_margin", &O::rival_lost_margin, "nats", ValueRange::positive(), "... or a distinct pose explains the window better by this")

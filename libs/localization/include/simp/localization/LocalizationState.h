@@ -39,6 +39,11 @@ struct StateParams {
     std::size_t localized_min_updates = 3; ///< ... over this many consecutive updates with detections
     std::size_t lost_window = 8;           ///< the lost test looks at this many last detections ...
     double lost_max_fit = 0.0;             ///< localized -> lost when their fit falls to this ...
+    /// ... a detection counting as explained there when the estimate or a pose within this (m, x and
+    /// y; rad, heading) of it explains it (3 x 3 x 3 grid): an estimate that is off by less than the
+    /// bounds is not lost. 0 = at the estimate only.
+    double lost_tolerance_m = 0.0;
+    double lost_tolerance_rad = 0.0;
     double lost_min_weight = 0.3;          ///< ... or the cluster weight under this ...
     /// ... or a distinct pose (HypothesisSearch) explains the window better than the estimate by
     /// this log-likelihood (nats); and localized needs the estimate to beat every distinct pose by
@@ -130,6 +135,12 @@ class FitWindow {
         int map_class = -1;
         double odo_x = 0, odo_y = 0;  ///< the detection's centre in the odometry frame (m)
     };
+    /// Whether the robot at `estimate` now, or at a pose of the 3 x 3 x 3 grid of tolerance_m /
+    /// tolerance_rad about it, explains item `it` (log-likelihood >= log_explained); std::nullopt when
+    /// the map does not score it.
+    static std::optional<bool> explainedNear(const maps::CObjectMap& map, const Item& it, const mrpt::poses::CPose2D& estimate,
+                              const mrpt::poses::CPose2D& odometry_now, double tolerance_m, double tolerance_rad,
+                              double log_explained);
     /// log p of item `it` with the robot at `estimate` now (its frame at estimate (+) (odometry_now^-1
     /// (+) its odometry pose)); std::nullopt when the map does not score it.
     static std::optional<double> logLikelihoodAt(const maps::CObjectMap& map, const Item& it,
