@@ -5,10 +5,10 @@
 #include "TestUtil.h"
 
 #include <gtest/gtest.h>
-
-#include <cmath>
 #include <simp/localization/DetectionNovelty.h>
 #include <simp/localization/LocalizationState.h>
+
+#include <cmath>
 
 using namespace simp::localization;
 using namespace simp::localization::test;

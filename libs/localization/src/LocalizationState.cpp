@@ -63,9 +63,10 @@ std::optional<double> FitWindow::logLikelihoodAt(const maps::CObjectMap& map, co
     return map.detectionLogLikelihood(*it.obs, it.k, world_T_frame.asTPose());
 }
 
-std::optional<bool> FitWindow::explainedNear(const maps::CObjectMap& map, const Item& it, const mrpt::poses::CPose2D& estimate,
-                              const mrpt::poses::CPose2D& odometry_now, double tolerance_m, double tolerance_rad,
-                              double log_explained) {
+std::optional<bool> FitWindow::explainedNear(const maps::CObjectMap& map, const Item& it,
+                                             const mrpt::poses::CPose2D& estimate,
+                                             const mrpt::poses::CPose2D& odometry_now, double tolerance_m,
+                                             double tolerance_rad, double log_explained) {
     const auto model = map.sensorModel();
     // Prepared once, scored at up to 27 poses (as scorePoses() does for the whole window).
     const auto prepared = model->prepare(it.map_class, it.obs->boxInRobot(it.k), it.obs->footprintInRobot(it.k));

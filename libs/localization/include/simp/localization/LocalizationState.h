@@ -138,9 +138,10 @@ class FitWindow {
     /// Whether the robot at `estimate` now, or at a pose of the 3 x 3 x 3 grid of tolerance_m /
     /// tolerance_rad about it, explains item `it` (log-likelihood >= log_explained); std::nullopt when
     /// the map does not score it.
-    static std::optional<bool> explainedNear(const maps::CObjectMap& map, const Item& it, const mrpt::poses::CPose2D& estimate,
-                              const mrpt::poses::CPose2D& odometry_now, double tolerance_m, double tolerance_rad,
-                              double log_explained);
+    static std::optional<bool> explainedNear(const maps::CObjectMap& map, const Item& it,
+                                             const mrpt::poses::CPose2D& estimate,
+                                             const mrpt::poses::CPose2D& odometry_now, double tolerance_m,
+                                             double tolerance_rad, double log_explained);
     /// log p of item `it` with the robot at `estimate` now (its frame at estimate (+) (odometry_now^-1
     /// (+) its odometry pose)); std::nullopt when the map does not score it.
     static std::optional<double> logLikelihoodAt(const maps::CObjectMap& map, const Item& it,
