@@ -178,6 +178,14 @@ void expectSame(const LidarModelOptions& a, const LidarModelOptions& b) {
     SIMP_EXPECT_SAME(map_objects);
 }
 
+void expectSame(const ManhattanHeadingOptions& a, const ManhattanHeadingOptions& b) {
+    SIMP_EXPECT_SAME(weight);
+    SIMP_EXPECT_SAME(yaw_sigma_rad);
+    SIMP_EXPECT_SAME(aligned_tolerance_rad);
+    SIMP_EXPECT_SAME(min_aligned_fraction);
+    SIMP_EXPECT_SAME(outlier_fraction);
+}
+
 void expectSame(const DetectionNoveltyParams& a, const DetectionNoveltyParams& b) {
     SIMP_EXPECT_SAME(decorrelation_distance_m);
     SIMP_EXPECT_SAME(min_weight);
@@ -251,6 +259,7 @@ TEST(LocalizeDefaults, CompiledInDefaultsEqualSimpIniFieldByField) {
     expectSame(a.options.search, b.options.search);
     expectSame(a.options.challenger, b.options.challenger);
     expectSame(a.options.lidar, b.options.lidar);
+    expectSame(a.options.heading, b.options.heading);
     expectSame(makeObjectMap(*a.params, "")->likelihoodOptions, makeObjectMap(*b.params, kSimpIni)->likelihoodOptions);
     EXPECT_TRUE(a.config_notes.empty());
     EXPECT_TRUE(b.config_notes.empty());

@@ -28,6 +28,7 @@ void expectAllPinned(const std::string& file, const LocalizerOptions& o) {
     expectPinned(file, searchParamsTable(), o.search);
     expectPinned(file, challengerParamsTable(), o.challenger);
     expectPinned(file, LidarModelOptions::table(), o.lidar);
+    expectPinned(file, ManhattanHeadingOptions::table(), o.heading);
 }
 
 }  // namespace
@@ -78,5 +79,6 @@ TEST(LocalizeOptionsShipped, DocumentedKeyTablesAreTheDeclarations) {
     expectUnder("#### `[SensorResetting]`", resettingParamsTable().markdown(SensorResettingParams{}));
     expectUnder("#### `[HypothesisSearch]`", searchParamsTable().markdown(HypothesisSearchParams{}));
     expectUnder("#### `[Challenger]`", challengerParamsTable().markdown(ChallengerParams{}));
+    expectUnder("#### `[ManhattanHeading]`", ManhattanHeadingOptions::table().markdown(ManhattanHeadingOptions{}));
     expectUnder("Generated from `MotionModelOptions::table()` (`LocalizeOptions.cpp`):", MotionModelOptions::table().markdown(MotionModelOptions{}));
 }

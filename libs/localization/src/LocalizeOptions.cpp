@@ -147,6 +147,7 @@ void loadLocalizerOptions(const mrpt::config::CConfigFileBase& cfg, LocalizerOpt
     loadSearchParams(cfg, "HypothesisSearch", options.search);
     loadChallengerParams(cfg, "Challenger", options.challenger);
     options.lidar.loadFromConfig(cfg, "LidarModel");
+    options.heading.loadFromConfig(cfg, "ManhattanHeading");
 }
 
 }  // namespace simp::localization

@@ -94,6 +94,10 @@ Localizer::Localizer(std::shared_ptr<const maps::CObjectMap> map, const mrpt::ma
       m_scans_since_lost(options.challenger.scan_window),
       m_views_since_lost(options.challenger.views, floorplan) {
     m_pf.m_options = m_opts.pf;
+    if (m_opts.heading.weight > 0.0) {
+        m_heading.emplace(*m_map, m_opts.heading);
+        if (!m_heading->active()) m_heading.reset();  // no dominant axes in this map
+    }
 }
 
 std::unique_ptr<ObjectMcl> Localizer::makeFilter() const {
@@ -258,7 +262,9 @@ void Localizer::update(ObjectMcl& mcl, LocalizationState state, const mrpt::pose
         injectFromDetections(mcl, state, observations);
         if (&mcl == m_mcl.get()) injectAboutLocalTarget(mcl, motion);
         const bool own_lost = &mcl == m_mcl.get() && state == LocalizationState::Lost;
-        mcl.weigh(observations, own_lost ? pf.powFactor * m_opts.experiment.lost_detection_power : pf.powFactor);
+        const double detection_power = own_lost ? pf.powFactor * m_opts.experiment.lost_detection_power : pf.powFactor;
+        mcl.weigh(observations, detection_power);
+        if (m_heading) mcl.weighHeading(*m_heading, observations, detection_power);
         if (m_scan_model && m_pending_scan) {
             mcl.weighScan(*m_scan_model, *m_pending_scan, pf.powFactor);
         }

@@ -80,6 +80,16 @@ void ObjectMcl::weighScan(const ScanLikelihood& model, const mrpt::obs::CObserva
     for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * pow_factor;
 }
 
+void ObjectMcl::weighHeading(const ManhattanHeading& model, const std::vector<WeightedObservation>& observations,
+                             double pow_factor) {
+    const std::size_t n = m_particles.size();
+    m_poses.resize(n);
+    m_log_lik.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) m_poses[i] = m_particles[i].d;
+    if (model.addLogLikelihoods(observations, params.singw_per_frame, m_poses.data(), n, m_log_lik.data()) == 0) return;
+    for (std::size_t i = 0; i < n; ++i) m_particles[i].log_w += m_log_lik[i] * pow_factor;
+}
+
 void ObjectMcl::prediction_and_update_pfStandardProposal(
     const mrpt::obs::CActionCollection* actions, const mrpt::obs::CSensoryFrame* sf,
     const mrpt::bayes::CParticleFilter::TParticleFilterOptions& PF_options) {

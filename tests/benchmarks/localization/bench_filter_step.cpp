@@ -136,4 +136,20 @@ void BM_FilterStep_Tracking(benchmark::State& state) {
 }
 BENCHMARK(BM_FilterStep_Tracking)->Unit(benchmark::kMillisecond);
 
+// What [ManhattanHeading] adds to a step: the K box yaws against the map's axes for every particle.
+void BM_ManhattanHeading(benchmark::State& state) {
+    auto& s = setup();
+    mrpt::random::getRandomGenerator().randomize(3);
+    simp::localization::ObjectMcl mcl(s.map, kParticles);
+    resetUniform(mcl, s.world.floorplan);
+    simp::localization::ManhattanHeadingOptions options;
+    options.weight = 0.5;
+    const simp::localization::ManhattanHeading model(*s.map, options);
+    if (!model.active()) state.SkipWithError("the map has no axes");
+    const auto observations = simp::localization::objectObservations(s.frame);
+    for (auto _ : state) mcl.weighHeading(model, observations, 1.0);
+    state.counters["particles"] = static_cast<double>(mcl.particlesCount());
+}
+BENCHMARK(BM_ManhattanHeading)->Unit(benchmark::kMicrosecond);
+
 }  // namespace

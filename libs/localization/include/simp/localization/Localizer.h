@@ -136,6 +136,7 @@ struct LocalizerOptions {
     HypothesisSearchParams search;
     ChallengerParams challenger;
     LidarModelOptions lidar;  ///< [LidarModel]: used by sensor_model lidar / simp+lidar only
+    ManhattanHeadingOptions heading;  ///< [ManhattanHeading]: box yaws against the map's axes (weight 0: off)
 
     /// pfStandardProposal, prSystematic, no adaptive size, BETA 0.5 (MRPT's section defaults).
     static mrpt::bayes::CParticleFilter::TParticleFilterOptions defaultPfOptions();
@@ -246,6 +247,7 @@ class Localizer {
     std::optional<ParticleSummary> m_summary;
     bool m_first = true;
     std::shared_ptr<const ScanLikelihood> m_scan_model;
+    std::optional<ManhattanHeading> m_heading;  ///< set when [ManhattanHeading] is on and the map has axes
     bool m_use_objects = true;
     mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
     ScanWindow m_scans_since_lost;  ///< [Challenger] scan_window: the scans weighed since `lost`

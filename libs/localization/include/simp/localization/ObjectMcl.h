@@ -7,6 +7,7 @@
 #include <mrpt/slam/CMonteCarloLocalization2D.h>
 #include <simp/localization/FrameLikelihood.h>
 #include <simp/localization/FreeSpace.h>
+#include <simp/localization/ManhattanHeading.h>
 #include <simp/localization/ObjectMclParams.h>
 #include <simp/localization/ScanLikelihood.h>
 #include <simp/maps/CObjectMap.h>
@@ -57,6 +58,10 @@ class ObjectMcl : public mrpt::slam::CMonteCarloLocalization2D {
     /// Adds pow_factor x the scan model's log-likelihood of `scan` (LidarModelOptions::weight applied)
     /// to every particle's log-weight (`simp-localize --method lidar|simp+lidar`).
     void weighScan(const ScanLikelihood& model, const mrpt::obs::CObservation2DRangeScan& scan, double pow_factor);
+    /// Adds pow_factor x the box-yaw heading log-likelihood of the update's observations
+    /// (ManhattanHeadingOptions::weight applied; grouped as params.singw_per_frame) to every particle.
+    void weighHeading(const ManhattanHeading& model, const std::vector<WeightedObservation>& observations,
+                      double pow_factor);
     /// Replaces min(poses.size(), N) particles, spread evenly over the set, by `poses`, each with the
     /// mean weight of the set (sensor resetting). \return how many were replaced.
     std::size_t inject(const std::vector<mrpt::math::TPose2D>& poses);
