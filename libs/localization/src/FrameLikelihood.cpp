@@ -44,25 +44,35 @@ std::vector<WeightedObservation> objectObservations(const mrpt::obs::CSensoryFra
     return out;
 }
 
-std::size_t updateLogLikelihoods(const maps::CObjectMap& map, const std::vector<WeightedObservation>& observations,
-                                 bool per_frame, const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+std::vector<std::vector<const WeightedObservation*>> frameGroups(const std::vector<WeightedObservation>& observations,
+                                                                 bool per_frame) {
     std::vector<mrpt::Clock::time_point> stamps;
     if (per_frame)
         for (const auto& o : observations)
             if (std::find(stamps.begin(), stamps.end(), o.obs->timestamp) == stamps.end())
                 stamps.push_back(o.obs->timestamp);
-    std::vector<const WeightedObservation*> group;
+    std::vector<std::vector<const WeightedObservation*>> groups;
     if (stamps.size() <= 1) {
-        for (const auto& o : observations) group.push_back(&o);
-        return groupLogLikelihoods(map, group, poses, n, out_log);
+        groups.emplace_back();
+        for (const auto& o : observations) groups.back().push_back(&o);
+        return groups;
     }
+    for (const auto& t : stamps) {
+        groups.emplace_back();
+        for (const auto& o : observations)
+            if (o.obs->timestamp == t) groups.back().push_back(&o);
+    }
+    return groups;
+}
+
+std::size_t updateLogLikelihoods(const maps::CObjectMap& map, const std::vector<WeightedObservation>& observations,
+                                 bool per_frame, const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) {
+    const auto groups = frameGroups(observations, per_frame);
+    if (groups.size() == 1) return groupLogLikelihoods(map, groups.front(), poses, n, out_log);
     std::fill(out_log, out_log + n, 0.0);
     std::vector<double> group_log(n);
     std::size_t K_total = 0;
-    for (const auto& t : stamps) {
-        group.clear();
-        for (const auto& o : observations)
-            if (o.obs->timestamp == t) group.push_back(&o);
+    for (const auto& group : groups) {
         const std::size_t K = groupLogLikelihoods(map, group, poses, n, group_log.data());
         if (K == 0) continue;
         K_total += K;

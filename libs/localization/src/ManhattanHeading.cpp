@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <stdexcept>
 
 namespace simp::localization {
 namespace {
@@ -14,6 +13,18 @@ constexpr double kQuarter = 0.5 * M_PI;
 
 /// a wrapped to [-pi/4, pi/4]: its distance to the nearest of the axes 0 + k pi/2.
 double wrapQuarter(double a) { return a - kQuarter * std::round(a / kQuarter); }
+
+/// a wrapped to [0, pi/2) as a position in a table of `bins` bins over the period: bin and fraction.
+struct QuarterBin {
+    std::size_t bin;
+    double fraction;
+};
+QuarterBin quarterBin(double a, std::size_t bins) {
+    double t = (a - kQuarter * std::floor(a / kQuarter)) * (static_cast<double>(bins) / kQuarter);
+    t = std::clamp(t, 0.0, static_cast<double>(bins) - 1e-9);
+    const auto bin = static_cast<std::size_t>(t);
+    return {bin, t - static_cast<double>(bin)};
+}
 
 }  // namespace
 
@@ -109,14 +120,9 @@ std::size_t ManhattanHeading::addGroup(const std::vector<const WeightedObservati
     // The sum depends on phi modulo 90 deg only: tabulated at phi_j = j x 90 deg / kBins, where
     // detection k's residual is phi_j + psi_k - alpha, i.e. its class table shifted by (psi_k - alpha).
     std::array<double, kBins + 1> table{};
-    const double scale = static_cast<double>(kBins) / kQuarter;
     for (const auto& u : used) {
         const auto& residual_log = m_residual_log[static_cast<std::size_t>(u.cls)];
-        const double shift = u.psi - m_axis_rad;
-        double b = (shift - kQuarter * std::floor(shift / kQuarter)) * scale;
-        b = std::clamp(b, 0.0, static_cast<double>(kBins) - 1e-9);
-        const auto m = static_cast<std::size_t>(b);
-        const double f = b - static_cast<double>(m);
+        const auto [m, f] = quarterBin(u.psi - m_axis_rad, kBins);
         for (std::size_t j = 0; j < kBins; ++j) {
             const std::size_t i0 = (j + m) % kBins, i1 = (i0 + 1) % kBins;
             table[j] += u.weight * ((1.0 - f) * residual_log[i0] + f * residual_log[i1]);
@@ -126,10 +132,7 @@ std::size_t ManhattanHeading::addGroup(const std::vector<const WeightedObservati
     for (std::size_t j = 0; j < kBins; ++j) table[j] *= factor;
     table[kBins] = table[0];
     for (std::size_t i = 0; i < n; ++i) {
-        double t = (poses[i].phi - kQuarter * std::floor(poses[i].phi / kQuarter)) * scale;
-        t = std::clamp(t, 0.0, static_cast<double>(kBins) - 1e-9);
-        const auto j = static_cast<std::size_t>(t);
-        const double f = t - static_cast<double>(j);
+        const auto [j, f] = quarterBin(poses[i].phi, kBins);
         out_log[i] += (1.0 - f) * table[j] + f * table[j + 1];
     }
     return used.size();
@@ -138,21 +141,8 @@ std::size_t ManhattanHeading::addGroup(const std::vector<const WeightedObservati
 std::size_t ManhattanHeading::addLogLikelihoods(const std::vector<WeightedObservation>& observations, bool per_frame,
                                                 const mrpt::math::TPose2D* poses, std::size_t n, double* out_log) const {
     if (!m_active) return 0;
-    std::vector<const WeightedObservation*> group;
-    if (!per_frame) {
-        for (const auto& o : observations) group.push_back(&o);
-        return addGroup(group, poses, n, out_log);
-    }
-    std::vector<mrpt::Clock::time_point> stamps;  // one group per camera frame, as Eq. singw's
-    for (const auto& o : observations)
-        if (std::find(stamps.begin(), stamps.end(), o.obs->timestamp) == stamps.end()) stamps.push_back(o.obs->timestamp);
     std::size_t used = 0;
-    for (const auto& t : stamps) {
-        group.clear();
-        for (const auto& o : observations)
-            if (o.obs->timestamp == t) group.push_back(&o);
-        used += addGroup(group, poses, n, out_log);
-    }
+    for (const auto& group : frameGroups(observations, per_frame)) used += addGroup(group, poses, n, out_log);
     return used;
 }
 

@@ -20,6 +20,11 @@ struct WeightedObservation {
     std::vector<double> weights;  ///< one per detection of obs, or empty
 };
 
+/// Eq. singw's grouping of an update's observations: per_frame = true, one group per time stamp (in
+/// order of first appearance); otherwise, or with a single time stamp, one group of all.
+std::vector<std::vector<const WeightedObservation*>> frameGroups(const std::vector<WeightedObservation>& observations,
+                                                                 bool per_frame);
+
 /// The CObservationObjects3D of a sensory frame with weight 1 (other observation types skipped).
 std::vector<WeightedObservation> objectObservations(const mrpt::obs::CSensoryFrame& sf);
 
