@@ -37,10 +37,13 @@ DetectionNovelty::Track* DetectionNovelty::nearest(const std::string& class_name
 }
 
 std::vector<double> DetectionNovelty::weigh(const simp::obs::CObservationObjects3D& obs,
-                                            const mrpt::poses::CPose2D& odometry_pose, double t_s) {
+                                            const mrpt::poses::CPose2D& odometry_pose, double t_s,
+                                            std::vector<TrackedDetection>* tracked) {
     std::vector<double> weights(obs.size(), 1.0);
+    if (tracked) tracked->clear();
     const bool temper = m_params.decorrelation_distance_m > 0.0;
     if (!temper && m_params.unmapped_min_detections == 0) return weights;
+    if (tracked) tracked->assign(obs.size(), TrackedDetection{});
     m_tracks.erase(std::remove_if(m_tracks.begin(), m_tracks.end(),
                                   [&](const Track& tr) { return t_s - tr.last_t_s > m_params.track_timeout_s; }),
                    m_tracks.end());
@@ -51,7 +54,8 @@ std::vector<double> DetectionNovelty::weigh(const simp::obs::CObservationObjects
         const std::string& name = obs.classNameOf(obs.detections()[k]);
         Track* best = nearest(name, centre);
         if (best == nullptr) {
-            m_tracks.push_back({name, centre, viewpoint, camera, t_s, centre, 1});
+            m_tracks.push_back({++m_last_id, name, centre, viewpoint, camera, t_s, centre, 1});
+            if (tracked) (*tracked)[k].track = m_last_id;
             continue;
         }
         double moved = (viewpoint - best->viewpoint_odom_m).norm();
@@ -61,10 +65,9 @@ std::vector<double> DetectionNovelty::weigh(const simp::obs::CObservationObjects
             const double shift = (camera.inverseComposePoint(c) - best->camera_odom.inverseComposePoint(c)).norm();
             moved = std::max(moved, m_params.view_change_weight * shift);
         }
-        if (best->unmapped)
-            weights[k] = 0.0;
-        else if (temper)
-            weights[k] = std::clamp(moved / m_params.decorrelation_distance_m, m_params.min_weight, 1.0);
+        const double temper_weight = temper ? std::clamp(moved / m_params.decorrelation_distance_m, m_params.min_weight, 1.0) : 1.0;
+        weights[k] = best->unmapped ? 0.0 : temper_weight;
+        if (tracked) (*tracked)[k] = {best->id, temper_weight};
         best->centre_odom_m = centre;
         best->sum_odom_m += centre;
         ++best->detected;

@@ -293,8 +293,11 @@ StepRecord Localizer::step(double t_s, const mrpt::poses::CPose2D& odometry_incr
         m_use_objects ? objectObservations(frame) : std::vector<WeightedObservation>{};
     if (m_scan_model)
         if (auto scan = lastScan(frame)) m_pending_scan = scan;
+    const bool consensus = m_heading && m_opts.heading.consensus_tolerance_rad > 0.0;
+    std::vector<TrackedDetection> tracked;
     for (auto& o : observations) {
-        o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s);
+        o.weights = m_novelty.weigh(*o.obs, m_odometry, t_s, consensus ? &tracked : nullptr);
+        if (consensus) o.heading_weights = m_yaw_consensus.weigh(*m_heading, *o.obs, tracked, m_odometry, t_s);
         m_fit.add(*m_map, o.obs, m_odometry, t_s, &o.weights);
         if (m_opts.challenger.enabled) {
             m_since_lost.add(*m_map, o.obs, m_odometry, t_s, &o.weights);

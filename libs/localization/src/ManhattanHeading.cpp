@@ -41,7 +41,15 @@ const io::OptionTable<ManhattanHeadingOptions>& ManhattanHeadingOptions::table()
             .number("min_aligned_fraction", &O::min_aligned_fraction, "", ValueRange::fraction(),
                     "the model is used only when this share of the map's objects is square to its axes")
             .number("outlier_fraction", &O::outlier_fraction, "", ValueRange::between(0, 0.999),
-                    "share of the detections of a square class assumed not square (moved, turned, false)");
+                    "share of the detections of a square class assumed not square (moved, turned, false)")
+            .number("consensus_tolerance_rad", &O::consensus_tolerance_rad, "rad", ValueRange::between(0, M_PI / 4),
+                    "a detection votes only when its object's yaw agrees this well with the other objects' (0 = off)")
+            .number("consensus_window_s", &O::consensus_window_s, "s", ValueRange::aboveUpTo(0, 3600),
+                    "the other objects: those seen in the last this many seconds")
+            .integer("consensus_min_tracks", &O::consensus_min_tracks, ValueRange::between(1, 1000),
+                     "at least this many other objects, else the detection does not vote")
+            .integer("consensus_min_detections", &O::consensus_min_detections, ValueRange::between(1, 1000000),
+                     "only objects detected this many times vote or count among the others");
     return t;
 }
 
@@ -92,6 +100,11 @@ double ManhattanHeading::inlierWeight(int cls) const {
     return cls >= 0 && static_cast<std::size_t>(cls) < m_inlier_weight.size() ? m_inlier_weight[static_cast<std::size_t>(cls)] : 0.0;
 }
 
+int ManhattanHeading::squareClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const {
+    const int cls = m_map.usableClassOf(obs, k);
+    return inlierWeight(cls) > 0.0 ? cls : -1;
+}
+
 double ManhattanHeading::detectionLogLikelihood(int cls, double psi_robot_rad, double phi_rad) const {
     const double w = inlierWeight(cls), s = m_opts.yaw_sigma_rad;
     const double r = wrapQuarter(phi_rad + psi_robot_rad - m_axis_rad);
@@ -109,7 +122,8 @@ std::size_t ManhattanHeading::addGroup(const std::vector<const WeightedObservati
     double sum_weight = 0.0;
     for (const auto* o : group)
         for (std::size_t k = 0; k < o->obs->size(); ++k) {
-            const double wk = o->weights.empty() ? 1.0 : o->weights.at(k);
+            const auto& weights = o->heading_weights.empty() ? o->weights : o->heading_weights;
+            const double wk = weights.empty() ? 1.0 : weights.at(k);
             if (wk <= 0.0) continue;
             const int cls = m_map.usableClassOf(*o->obs, k);
             if (inlierWeight(cls) <= 0.0) continue;

@@ -20,6 +20,7 @@
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -49,15 +50,23 @@ struct DetectionNoveltyParams {
     double unmapped_tolerance_rad = 0.1;
 };
 
+/// The track a detection went to (ids start at 1 and are never reused; 0 = none) and its
+/// tempering weight before the unmapped mark (w above, 1 when tempering is off).
+struct TrackedDetection {
+    std::uint64_t track = 0;
+    double temper_weight = 1.0;
+};
+
 class DetectionNovelty {
    public:
     explicit DetectionNovelty(const DetectionNoveltyParams& params = {}) : m_params(params) {}
 
     /// Weights of the detections of `obs` (one per detection, in order) taken at time t_s (s) with
     /// the robot at `odometry_pose` (odometry frame); updates the tracks. 1 when tempering is off;
-    /// 0 for a detection on an unmapped track.
+    /// 0 for a detection on an unmapped track. `tracked`, when given, receives each detection's
+    /// track (left empty when tempering and the unmapped test are both off: no tracks are kept).
     std::vector<double> weigh(const simp::obs::CObservationObjects3D& obs, const mrpt::poses::CPose2D& odometry_pose,
-                              double t_s);
+                              double t_s, std::vector<TrackedDetection>* tracked = nullptr);
     /// Detection k of `obs` (weighed at t_s with the robot at `odometry_pose`) was explained or not
     /// by the estimate: counts for its track's unmapped test.
     void judge(const simp::obs::CObservationObjects3D& obs, std::size_t k, const mrpt::poses::CPose2D& odometry_pose,
@@ -71,6 +80,7 @@ class DetectionNovelty {
 
    private:
     struct Track {
+        std::uint64_t id = 0;
         std::string class_name;
         Eigen::Vector2d centre_odom_m;    ///< last detected centre (odometry frame)
         Eigen::Vector2d viewpoint_odom_m; ///< robot position at the last detection (odometry frame)
@@ -89,6 +99,7 @@ class DetectionNovelty {
     Track* nearest(const std::string& class_name, const Eigen::Vector2d& centre);
     DetectionNoveltyParams m_params;
     std::vector<Track> m_tracks;
+    std::uint64_t m_last_id = 0;
 };
 
 }  // namespace simp::localization

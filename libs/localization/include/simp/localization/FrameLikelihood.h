@@ -9,6 +9,7 @@
 #include <simp/obs/CObservationObjects3D.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace simp::localization {
@@ -16,8 +17,17 @@ namespace simp::localization {
 /// One camera observation of an update, its camera pose in the update's robot frame, with the
 /// exponent of each detection's likelihood (DetectionNovelty; empty = all 1, the paper's).
 struct WeightedObservation {
+    WeightedObservation() = default;
+    WeightedObservation(simp::obs::CObservationObjects3D::Ptr observation, std::vector<double> detection_weights = {},
+                        std::vector<double> detection_heading_weights = {})
+        : obs(std::move(observation)),
+          weights(std::move(detection_weights)),
+          heading_weights(std::move(detection_heading_weights)) {}
+
     simp::obs::CObservationObjects3D::Ptr obs;
     std::vector<double> weights;  ///< one per detection of obs, or empty
+    /// ManhattanHeading's exponent per detection (YawConsensus), or empty: `weights` then.
+    std::vector<double> heading_weights;
 };
 
 /// Eq. singw's grouping of an update's observations: per_frame = true, one group per time stamp (in

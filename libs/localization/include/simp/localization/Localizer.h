@@ -23,6 +23,7 @@
 #include <simp/localization/SkippedDetections.h>
 #include <simp/localization/StepRecord.h>
 #include <simp/localization/ViewWindow.h>
+#include <simp/localization/YawConsensus.h>
 
 #include <limits>
 #include <memory>
@@ -248,6 +249,7 @@ class Localizer {
     bool m_first = true;
     std::shared_ptr<const ScanLikelihood> m_scan_model;
     std::optional<ManhattanHeading> m_heading;  ///< set when [ManhattanHeading] is on and the map has axes
+    YawConsensus m_yaw_consensus;               ///< used with m_heading when consensus_tolerance_rad > 0
     bool m_use_objects = true;
     mrpt::obs::CObservation2DRangeScan::Ptr m_pending_scan;  ///< the latest scan not yet weighed
     ScanWindow m_scans_since_lost;  ///< [Challenger] scan_window: the scans weighed since `lost`

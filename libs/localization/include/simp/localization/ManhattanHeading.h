@@ -38,6 +38,15 @@ struct ManhattanHeadingOptions {
     /// Share of the detections of a class all square in the map assumed not to be (moved and turned
     /// furniture, false detections): the uniform part of the mixture.
     double outlier_fraction = 0.3;
+    /// YawConsensus: a detection votes only when its object's yaw (mean over its track, odometry
+    /// frame) is within this of the other objects' (rad). 0 = off: every detection votes, with
+    /// DetectionNovelty's weight.
+    double consensus_tolerance_rad = 0.1;
+    double consensus_window_s = 10.0;      ///< the other objects: tracks seen in the last this many s
+    std::size_t consensus_min_tracks = 2;  ///< at least this many of them, else no vote
+    /// Only objects detected at least this many times vote or count among the others: a false
+    /// detection seldom repeats where it was, an object does.
+    std::size_t consensus_min_detections = 3;
 
     /// The declaration of every key (section [ManhattanHeading]).
     static const io::OptionTable<ManhattanHeadingOptions>& table();
@@ -53,13 +62,17 @@ class ManhattanHeading {
 
     /// The map has axes (min_aligned_fraction reached) and weight > 0: logLikelihoods() adds something.
     bool active() const { return m_active; }
+    const ManhattanHeadingOptions& options() const { return m_opts; }
     double axisRad() const { return m_axis_rad; }           ///< alpha, in [0, pi / 2)
     double alignedFraction() const { return m_aligned_fraction; }  ///< share of the map's objects square to alpha
     /// w of map class `cls` (0: its objects are not square to the axes, its detections are not used).
     double inlierWeight(int cls) const;
+    /// The map class of detection k of `obs` when it is usable and square in the map (w > 0), else -1.
+    int squareClassOf(const simp::obs::CObservationObjects3D& obs, std::size_t k) const;
 
     /// out_log[i] += weight x the weighted mean of log p(psi_k | poses[i].phi) over the usable detections
-    /// k, with the observations' weights w_k (DetectionNovelty's; 0: not used), per camera frame (time
+    /// k, with the observations' weights w_k (their heading_weights when set, else DetectionNovelty's
+    /// weights; 0: not used), per camera frame (time
     /// stamp) when per_frame and the frames added, else over all (Eq. singw's grouping). A frame's say
     /// does not grow with its number of detections. Measured (doc/results-localization.md, forty-eighth
     /// session): the sum over the detections, and Eq. singw's (1/K) sum_k w_k, did worse. \return the number of detections used.
