@@ -16,7 +16,9 @@ std::vector<double> YawConsensus::weigh(const ManhattanHeading& heading, const s
     m_tracks.erase(std::remove_if(m_tracks.begin(), m_tracks.end(),
                                   [&](const TrackYaw& tr) { return t_s - tr.last_t_s > o.consensus_window_s; }),
                    m_tracks.end());
-    std::vector<const TrackYaw*> of(obs.size(), nullptr);
+    // Indices, not pointers: later insertions may move the tracks.
+    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+    std::vector<std::size_t> of(obs.size(), kNone);
     for (std::size_t k = 0; k < obs.size(); ++k) {
         if (tracked[k].track == 0 || heading.squareClassOf(obs, k) < 0) continue;
         const double yaw4 = 4.0 * (geometry::yawOf(obs.boxInRobot(k)) + odometry_pose.phi());
@@ -26,24 +28,22 @@ std::vector<double> YawConsensus::weigh(const ManhattanHeading& heading, const s
         it->sum_sin4 += std::sin(yaw4);
         ++it->detections;
         it->last_t_s = t_s;
+        of[k] = static_cast<std::size_t>(it - m_tracks.begin());
     }
-    // Pointers only after the last insertion.
-    for (std::size_t k = 0; k < obs.size(); ++k)
-        if (tracked[k].track != 0 && heading.squareClassOf(obs, k) >= 0)
-            for (const auto& tr : m_tracks)
-                if (tr.track == tracked[k].track) of[k] = &tr;
     for (std::size_t k = 0; k < obs.size(); ++k) {
-        if (of[k] == nullptr || of[k]->detections < o.consensus_min_detections) continue;
+        if (of[k] == kNone) continue;
+        const TrackYaw& own = m_tracks[of[k]];
+        if (own.detections < o.consensus_min_detections) continue;
         // The other tracks vote with one unit vector each: an object seen often counts once.
         double c = 0.0, s = 0.0;
         std::size_t others = 0;
         for (const auto& tr : m_tracks) {
-            if (&tr == of[k] || tr.detections < o.consensus_min_detections) continue;
+            if (&tr == &own || tr.detections < o.consensus_min_detections) continue;
             const double a = std::atan2(tr.sum_sin4, tr.sum_cos4);
             c += std::cos(a), s += std::sin(a), ++others;
         }
         if (others < o.consensus_min_tracks || others == 0) continue;
-        const double mine = std::atan2(of[k]->sum_sin4, of[k]->sum_cos4);
+        const double mine = std::atan2(own.sum_sin4, own.sum_cos4);
         const double diff4 = std::remainder(mine - std::atan2(s, c), 2.0 * M_PI);  // 4 x the yaw difference
         if (std::abs(diff4) <= 4.0 * o.consensus_tolerance_rad) weights[k] = tracked[k].temper_weight;
     }
